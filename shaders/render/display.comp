@@ -1,0 +1,44 @@
+// Display: turns the chosen view into an 8-bit sRGB image (PNG, window) and a linear float
+// image (EXR, metrics). Tone mapping happens only here.
+#include "common/gbuffer.glsl"
+#include "common/color.glsl"
+#include "shared/display.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = TEX_LIT) uniform sampler2D lit_tex;
+layout(binding = TEX_REFLECTION) uniform sampler2D reflection_tex;
+layout(binding = TEX_COLOR) uniform sampler2D color_tex;
+layout(binding = IMG_OUT, rgba8) uniform writeonly image2D out_display;
+layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_linear;
+layout(location = 0) uniform int u_view;
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+  bool hdr = true;  // HDR radiance: tone map; otherwise data shown as is
+  vec3 v = vec3(0.0);
+  if (u_view == VIEW_FINAL) {
+    v = texelFetch(color_tex, p, 0).rgb;
+  } else if (u_view == VIEW_REFLECTION) {
+    v = texelFetch(reflection_tex, p, 0).rgb;
+  } else if (u_view == VIEW_LIT) {
+    v = texelFetch(lit_tex, p, 0).rgb;
+  } else {
+    hdr = false;
+    GSample g = gbuffer_fetch(p);
+    bool bg = is_background(g.depth);
+    if (u_view == VIEW_CONFIDENCE) v = vec3(clamp(texelFetch(reflection_tex, p, 0).a, 0.0, 1.0));
+    else if (u_view == VIEW_NORMAL) v = bg ? vec3(0.0) : g.n_vs * 0.5 + 0.5;
+    else if (u_view == VIEW_DEPTH) {
+      float z = bg ? frame.clip.y : -g.pos_vs.z;
+      v = vec3(1.0 - log(z / frame.clip.x) / log(frame.clip.y / frame.clip.x));
+    }
+    else if (u_view == VIEW_ALBEDO) v = g.albedo;
+    else if (u_view == VIEW_ROUGHNESS) v = vec3(g.roughness);
+    else if (u_view == VIEW_METALLIC) v = vec3(g.metallic);
+    else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
+  }
+  vec3 shown = hdr ? linear_to_srgb(tonemap_aces(v * exp2(frame.settings.y))) : clamp(v, 0.0, 1.0);
+  imageStore(out_display, p, vec4(shown, 1.0));
+  imageStore(out_linear, p, vec4(v, 1.0));
+}

@@ -1,0 +1,14 @@
+// What the display pass shows (--view); the C++ enum and the GLSL switch share these numbers.
+#include "shared/interop.h"
+
+#define VIEW_FINAL 0        // composited colour, tone mapped
+#define VIEW_REFLECTION 1   // technique reflection rgb, tone mapped
+#define VIEW_CONFIDENCE 2   // technique reflection alpha, grey
+#define VIEW_LIT 3          // lit colour without reflections, tone mapped
+#define VIEW_NORMAL 4       // view-space normal * 0.5 + 0.5
+#define VIEW_DEPTH 5        // linear view depth, near white -> far black (log scale)
+#define VIEW_ALBEDO 6
+#define VIEW_ROUGHNESS 7
+#define VIEW_METALLIC 8
+#define VIEW_MASK 9         // reflective pixels white, planar reflectors tinted
+#define VIEW_COUNT 10

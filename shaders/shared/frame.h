@@ -1,0 +1,35 @@
+// Per-frame and per-draw uniform layouts (std140 in GLSL; identical C++ structs).
+#include "shared/interop.h"
+
+SSR_SHARED_BEGIN
+
+struct FrameUniforms {
+  mat4 view;           // world -> view (right-handed, camera looks down -Z)
+  mat4 proj;           // view -> clip, reversed-Z (near -> depth 1, far -> depth 0)
+  mat4 inv_view;
+  mat4 inv_proj;
+  mat4 view_proj;
+  vec4 viewport;       // width, height, 1/width, 1/height (pixels)
+  vec4 camera_pos;     // world position, w = 1
+  vec4 clip;           // near, far, tan(fov_y / 2), aspect
+  vec4 env_zenith;     // linear radiance (intensity applied), w = environment type (0 sky, 1 constant)
+  vec4 env_horizon;
+  vec4 env_ground;
+  vec4 env_constant;
+  vec4 settings;       // x ambient scale, y exposure (stops), z reflective F0 threshold, w unused
+  ivec4 counts;        // x lights, y reflectors, z frame index, w unused
+};
+
+struct DrawUniforms {
+  vec4 albedo_metallic;   // linear rgb, metallic
+  vec4 material;          // roughness, reflectance, normal strength, ior
+  vec4 emission;          // linear rgb, w unused
+  ivec4 ids;              // x reflector id, y has albedo map, z has normal map, w transparent
+};
+
+struct GpuLight {
+  vec4 position_type;     // world xyz (point) / travel direction (directional); w 0 point, 1 dir
+  vec4 color_range;       // linear rgb * intensity, range (point)
+};
+
+SSR_SHARED_END

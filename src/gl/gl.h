@@ -1,0 +1,3 @@
+// The one include for GL: glad's GL 4.5 core loader (generated at build time).
+#pragma once
+#include <glad/gl.h>

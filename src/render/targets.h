@@ -1,0 +1,16 @@
+// The frame's render targets, owned by the Renderer and read by techniques.
+#pragma once
+#include "gl/objects.h"
+
+namespace ssr {
+
+struct GBuffer {
+  gl::Texture2D depth;             // D32F, reversed-Z, cleared to 0
+  gl::Texture2D normal_roughness;  // RGBA16F: view-space normal, perceptual roughness
+  gl::Texture2D albedo_metallic;   // RGBA8: linear albedo, metallic
+  gl::Texture2D material;          // RGBA8UI: reflector id, reflectance*255, flags
+  gl::Texture2D emission;          // RGBA16F: emitted radiance
+  gl::Framebuffer fbo;
+};
+
+}  // namespace ssr

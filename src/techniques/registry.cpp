@@ -1,0 +1,28 @@
+#include "core/errors.h"
+#include "techniques/technique.h"
+
+namespace ssr {
+
+// One line per technique; each factory lives in its technique's file.
+std::unique_ptr<Technique> make_none_technique();
+std::unique_ptr<Technique> make_linear_technique();
+
+const std::vector<TechniqueInfo>& technique_registry() {
+  static const std::vector<TechniqueInfo> registry = {
+      {"none", "no reflections: the composite shows the environment only", make_none_technique},
+      {"linear", "brute-force view-space linear march (Kim 2018, 2.3.1), optional depth interpolation",
+       make_linear_technique},
+  };
+  return registry;
+}
+
+std::unique_ptr<Technique> create_technique(const std::string& name) {
+  std::string known;
+  for (const TechniqueInfo& t : technique_registry()) {
+    if (t.name == name) return t.create();
+    known += (known.empty() ? "" : ", ") + t.name;
+  }
+  throw InputError("unknown technique '" + name + "' (known: " + known + ").");
+}
+
+}  // namespace ssr

@@ -1,0 +1,69 @@
+// The program loader: #include expansion, file:line error reports, embedded vs directory.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.h"
+#include "gl/program.h"
+#include "gl_test_env.h"
+
+using namespace ssr;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path make_shader_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("ssrlab-shaders-" + std::to_string(::getpid()));
+  fs::create_directories(dir / "common");
+  std::ofstream(dir / "common/a.glsl") << "#pragma once\nfloat twice(float x) { return 2.0 * x; }\n";
+  std::ofstream(dir / "ok.comp") << "#include \"common/a.glsl\"\n#include \"common/a.glsl\"\n"
+                                    "layout(local_size_x = 8, local_size_y = 4) in;\n"
+                                    "layout(std430, binding = 0) buffer B { float v[]; };\n"
+                                    "void main() { v[gl_GlobalInvocationID.x] = twice(float(gl_GlobalInvocationID.x)); }\n";
+  std::ofstream(dir / "common/bad.glsl") << "// line 1\n// line 2\nfloat broken() { return undefined_name; }\n";
+  std::ofstream(dir / "bad.comp") << "#include \"common/bad.glsl\"\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
+  return dir;
+}
+}  // namespace
+
+TEST(Program, IncludesOnceAndRuns) {
+  const fs::path dir = make_shader_dir();
+  gl::ShaderSource src(dir);
+  std::vector<std::string> files;
+  const std::string text = src.expand("ok.comp", {}, files);
+  EXPECT_EQ(files.size(), 2u);  // ok.comp and common/a.glsl, once
+  gl::Program p = gl::Program::compute(src, "ok.comp");
+  gl::Buffer buf = gl::make_buffer("test", 64 * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf.id());
+  p.dispatch_2d(64, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> out(64);
+  glGetNamedBufferSubData(buf.id(), 0, 64 * sizeof(float), out.data());
+  for (int i = 0; i < 64; ++i) EXPECT_EQ(out[static_cast<std::size_t>(i)], 2.0f * i);
+  fs::remove_all(dir);
+  test::expect_no_gl_errors();
+}
+
+TEST(Program, CompileErrorNamesFileAndLine) {
+  const fs::path dir = make_shader_dir();
+  gl::ShaderSource src(dir);
+  try {
+    gl::Program::compute(src, "bad.comp");
+    FAIL() << "expected a compile error";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("shaders/common/bad.glsl:3"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+  gl::take_gl_errors();  // a failed compile may be reported through KHR_debug too
+}
+
+TEST(Program, EveryEmbeddedProgramCompiles) {
+  gl::ShaderSource embedded;
+  for (const char* p : {"render/lighting.comp", "render/composite.comp", "render/display.comp",
+                        "techniques/linear.comp"})
+    EXPECT_NO_THROW(gl::Program::compute(embedded, p)) << p;
+  EXPECT_NO_THROW(gl::Program::graphics(embedded, "render/gbuffer.vert", "render/gbuffer.frag"));
+  test::expect_no_gl_errors();
+}

@@ -1,0 +1,97 @@
+// Params tables: parsing, validation, defaults, and the registry's consistency.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "techniques/technique.h"
+
+using namespace ssr;
+
+TEST(Params, LinearDefaultsAndSet) {
+  auto t = create_technique("linear");
+  ParamSet p = t->params();
+  const int i = p.find("linear.max_steps");
+  ASSERT_GE(i, 0);
+  EXPECT_EQ(p.find("max_steps"), i);
+  EXPECT_EQ(p.get(static_cast<std::size_t>(i)), p.get_default(static_cast<std::size_t>(i)));
+  p.set_from_string(static_cast<std::size_t>(i), "64");
+  EXPECT_EQ(p.get(static_cast<std::size_t>(i)), 64);
+  EXPECT_EQ(p.to_string(static_cast<std::size_t>(i)), "64");
+  p.reset_all();
+  EXPECT_EQ(p.get(static_cast<std::size_t>(i)), p.get_default(static_cast<std::size_t>(i)));
+}
+
+TEST(Params, RejectsBadValues) {
+  auto t = create_technique("linear");
+  ParamSet p = t->params();
+  const auto steps = static_cast<std::size_t>(p.find("max_steps"));
+  const auto thick = static_cast<std::size_t>(p.find("thickness"));
+  const auto interp = static_cast<std::size_t>(p.find("depth_interp"));
+  EXPECT_THROW(p.set_from_string(steps, "0"), InputError);        // below range
+  EXPECT_THROW(p.set_from_string(steps, "1e9"), InputError);      // above range
+  EXPECT_THROW(p.set_from_string(steps, "2.5"), InputError);      // not whole
+  EXPECT_THROW(p.set_from_string(steps, "abc"), InputError);
+  EXPECT_THROW(p.set_from_string(steps, ""), InputError);
+  EXPECT_THROW(p.set_from_string(thick, "nan"), InputError);
+  EXPECT_THROW(p.set_from_string(thick, "inf"), InputError);
+  EXPECT_THROW(p.set_from_string(thick, "0.1x"), InputError);
+  EXPECT_THROW(p.set_from_string(interp, "maybe"), InputError);
+  p.set_from_string(interp, "off");
+  EXPECT_EQ(p.get(interp), 0);
+  p.set_from_string(interp, "true");
+  EXPECT_EQ(p.get(interp), 1);
+  try {
+    p.set_from_string(steps, "0");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("linear.max_steps"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("[1, 8192]"), std::string::npos);
+  }
+}
+
+TEST(Params, Assignments) {
+  auto t = create_technique("linear");
+  apply_assignments(*t, {"linear.thickness=0.5", "linear.depth_interp=false"});
+  ParamSet p = t->params();
+  EXPECT_FLOAT_EQ(static_cast<float>(p.get(static_cast<std::size_t>(p.find("thickness")))), 0.5f);
+  EXPECT_THROW(apply_assignments(*t, {"linear.nope=1"}), InputError);
+  EXPECT_THROW(apply_assignments(*t, {"dda.thickness=1"}), InputError);  // another technique
+  EXPECT_THROW(apply_assignments(*t, {"thickness=1"}), InputError);      // no prefix
+  EXPECT_THROW(apply_assignments(*t, {"linear.thickness"}), InputError); // no '='
+  auto none = create_technique("none");
+  EXPECT_THROW(apply_assignments(*none, {"none.x=1"}), InputError);
+}
+
+TEST(Params, RegistryTablesAreWellFormed) {
+  std::set<std::string> names;
+  for (const TechniqueInfo& info : technique_registry()) {
+    EXPECT_TRUE(names.insert(info.name).second) << info.name;
+    auto t = info.create();
+    EXPECT_EQ(t->name(), info.name);
+    ParamSet p = t->params();
+    std::set<std::string> keys;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const ParamDesc& d = p.table()[i];
+      EXPECT_TRUE(keys.insert(d.name).second) << p.key(i);
+      EXPECT_LE(d.min, d.max) << p.key(i);
+      EXPECT_GE(p.get_default(i), d.min) << p.key(i);
+      EXPECT_LE(p.get_default(i), d.max) << p.key(i);
+      EXPECT_GT(std::string(d.help).size(), 10u) << p.key(i);
+      for (char c : std::string(d.name)) EXPECT_TRUE(std::islower(c) || std::isdigit(c) || c == '_') << p.key(i);
+    }
+  }
+  EXPECT_THROW(create_technique("nope"), InputError);
+}
+
+TEST(Cli, ParseSize) {
+  EXPECT_EQ(parse_size("1280x720"), std::make_pair(1280, 720));
+  EXPECT_EQ(parse_size("1x1"), std::make_pair(1, 1));
+  EXPECT_THROW(parse_size("0x0"), InputError);
+  EXPECT_THROW(parse_size("10x0"), InputError);
+  EXPECT_THROW(parse_size("-5x5"), InputError);
+  EXPECT_THROW(parse_size("1280"), InputError);
+  EXPECT_THROW(parse_size("1280x720x3"), InputError);
+  EXPECT_THROW(parse_size("9999999x5"), InputError);
+}
