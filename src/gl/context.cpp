@@ -140,9 +140,7 @@ class OSMesaContext final : public HeadlessContext {
  public:
   using DestroyFn = void (*)(OSMesaContextH);
   OSMesaContext(void* lib, OSMesaContextH ctx, DestroyFn destroy)
-      : lib_(lib), ctx_(ctx), destroy_(destroy) {
-    info_ = fill_info("osmesa");
-  }
+      : lib_(lib), ctx_(ctx), destroy_(destroy) {}  // info_ is filled once current
   ~OSMesaContext() override {
     destroy_(ctx_);
     // The library stays loaded: Mesa does not support being unloaded and reloaded.

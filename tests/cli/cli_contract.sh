@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The command-line contract (DESIGN §7): outputs, exit codes, one-sentence errors, and no file
+# left behind on bad input. Runs the real binary ($SSRLAB) headless.
+set -u
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok()   { passes=$((passes + 1)); }
+bad()  { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# expect_exit CODE ARGS...: runs ssrlab, checks the exit code; on code 2 also checks that stderr
+# is exactly one line and that no output file appeared.
+expect_exit() {
+  local want=$1; shift
+  rm -f "$tmp"/out.*
+  "$SSRLAB" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+  local got=$?
+  if [ "$got" != "$want" ]; then bad "exit $got (want $want): ssrlab $*"; sed 's/^/  | /' "$tmp/stderr"; return; fi
+  if [ "$want" = 2 ]; then
+    local lines; lines=$(grep -vc '^ssrlab: GL via' "$tmp/stderr")
+    [ "$lines" = 1 ] || { bad "stderr is not one sentence ($lines lines): ssrlab $*"; sed 's/^/  | /' "$tmp/stderr"; return; }
+    ls "$tmp"/out.* >/dev/null 2>&1 && { bad "output left behind: ssrlab $*"; return; }
+  fi
+  ok
+}
+
+S="--size 64x36"
+# --- good input -------------------------------------------------------------------------------
+expect_exit 0 render --scene gallery --technique none $S --out "$tmp/out.png"
+expect_exit 0 render --scene gallery --technique linear $S --view reflection --out "$tmp/none.png"
+[ -s "$tmp/none.png" ] && ok || bad "render wrote no PNG"
+expect_exit 0 render --scene cornell --technique linear $S --set linear.max_steps=32 --set linear.depth_interp=false --out "$tmp/c.exr"
+[ "$(head -c 4 "$tmp/c.exr" | od -An -tx1 | tr -d ' ')" = "762f3101" ] && ok || bad "EXR magic missing"
+expect_exit 0 render --scene corridor --camera default --gl osmesa $S --out "$tmp/o.png"
+expect_exit 0 scenes
+grep -q gallery "$tmp/stdout" && ok || bad "scenes does not list gallery"
+expect_exit 0 techniques
+for key in linear.max_steps linear.step_size linear.thickness linear.max_distance linear.depth_interp; do
+  grep -q "$key" "$tmp/stdout" && ok || bad "techniques does not list $key"
+done
+ls "$tmp"/*.tmp* >/dev/null 2>&1 && bad "temporary files left behind" || ok
+
+# --- bad input: one sentence, exit 2, nothing written -----------------------------------------
+expect_exit 2 render --scene nope $S --out "$tmp/out.png"
+expect_exit 2 render --scene "$tmp/missing.json" $S --out "$tmp/out.png"
+expect_exit 2 render --technique nope $S --out "$tmp/out.png"
+expect_exit 2 render --set linear.nope=1 $S --out "$tmp/out.png"
+expect_exit 2 render --set dda.thickness=1 $S --out "$tmp/out.png"
+expect_exit 2 render --set linear.max_steps=0 $S --out "$tmp/out.png"
+expect_exit 2 render --set linear.thickness=nan $S --out "$tmp/out.png"
+expect_exit 2 render --set linear.max_steps $S --out "$tmp/out.png"
+expect_exit 2 render --size 0x0 --out "$tmp/out.png"
+expect_exit 2 render --size 1x0 --out "$tmp/out.png"
+expect_exit 2 render --size 100000x100000 --out "$tmp/out.png"
+expect_exit 2 render --size 40000x8 --out "$tmp/out.png"
+expect_exit 2 render --size big --out "$tmp/out.png"
+expect_exit 2 render --camera nope $S --out "$tmp/out.png"
+expect_exit 2 render --view nope $S --out "$tmp/out.png"
+expect_exit 2 render $S --out "$tmp/out.jpg"
+expect_exit 2 render $S --out "$tmp/no/such/dir/out.png"
+expect_exit 2 render $S --exposure abc --out "$tmp/out.png"
+expect_exit 2 render $S --gl vulkan --out "$tmp/out.png"
+expect_exit 2 render $S
+expect_exit 2 nosuchcommand
+for f in "$TESTDATA"/bad_*; do
+  [ -e "$f" ] || continue
+  expect_exit 2 render --scene "$f" $S --out "$tmp/out.png"
+done
+
+echo "$passes passed, $fails failed"
+[ "$fails" = 0 ]
