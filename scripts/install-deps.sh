@@ -6,7 +6,7 @@ pkgs=(
   python3-glad                      # glad generator (run with --reproducible at build time)
   libegl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6   # headless GL: EGL, llvmpipe, OSMesa
   libglfw3-dev libimgui-dev         # viewer
-  libglm-dev libtinyobjloader-dev libstb-dev libtinyexr-dev nlohmann-json3-dev libcli11-dev
+  libglm-dev libembree-dev libtinyobjloader-dev libstb-dev libtinyexr-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev                      # tests
   xvfb xauth                        # viewer test in a real X window
 )

@@ -1,7 +1,7 @@
 // Display: turns the chosen view into an 8-bit sRGB image (PNG, window) and a linear float
 // image (EXR, metrics). Tone mapping happens only here.
 #include "common/gbuffer.glsl"
-#include "common/color.glsl"
+#include "shared/tonemap.h"
 #include "shared/display.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -38,7 +38,7 @@ void main() {
     else if (u_view == VIEW_METALLIC) v = vec3(g.metallic);
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
-  vec3 shown = hdr ? linear_to_srgb(tonemap_aces(v * exp2(frame.settings.y))) : clamp(v, 0.0, 1.0);
+  vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);
   imageStore(out_display, p, vec4(shown, 1.0));
   imageStore(out_linear, p, vec4(v, 1.0));
 }

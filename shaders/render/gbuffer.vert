@@ -15,4 +15,6 @@ void main() {
   v_tangent_vs = vec4(mat3(frame.view) * in_tangent.xyz, in_tangent.w);
   v_uv = in_uv;
   gl_Position = frame.view_proj * vec4(in_position, 1.0);
+  // Planar mirror renders clip what lies behind the mirror; (0,0,0,1) keeps everything.
+  gl_ClipDistance[0] = dot(frame.clip_plane, vec4(in_position, 1.0));
 }

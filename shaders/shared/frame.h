@@ -18,6 +18,7 @@ struct FrameUniforms {
   vec4 env_constant;
   vec4 settings;       // x ambient scale, y exposure (stops), z reflective F0 threshold, w unused
   ivec4 counts;        // x lights, y reflectors, z frame index, w unused
+  vec4 clip_plane;     // world-space plane (n, d): geometry with dot(n, p) + d < 0 is clipped
 };
 
 struct DrawUniforms {

@@ -14,6 +14,8 @@ class GpuScene {
   void draw_gbuffer() const;
   GLuint lights_ssbo() const { return lights_.id(); }
   int light_count() const { return light_count_; }
+  // The albedo (sRGB, mip-mapped) texture of scene image i.
+  GLuint albedo_texture(int image) const { return textures_[static_cast<std::size_t>(image)].id(); }
 
  private:
   struct Draw {

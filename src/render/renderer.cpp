@@ -102,6 +102,7 @@ void Renderer::bind_frame_inputs() const {
 }
 
 void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
+  camera_ = camera;
   matrices_ = camera_matrices(camera, width_, height_);
   shared::FrameUniforms f{};
   f.view = matrices_.view;
@@ -121,6 +122,7 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
   f.env_constant = glm::vec4(e.constant * e.intensity, 0.0f);
   f.settings = {scene_.ambient, settings.exposure, settings.reflective_f0, 0.0f};
   f.counts = {gpu_scene_->light_count(), static_cast<int>(scene_.reflectors.size()), frame_index_++, 0};
+  f.clip_plane = settings.clip_plane;
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
   bind_frame_inputs();
 
@@ -137,6 +139,7 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
     glClearNamedFramebufferfv(gbuffer_.fbo.id(), GL_COLOR, 3, zero);
     glClearNamedFramebufferfv(gbuffer_.fbo.id(), GL_DEPTH, 0, &depth_clear);
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CLIP_DISTANCE0);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);  // two-sided: scenes may be seen from inside
@@ -145,6 +148,7 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
     gpu_scene_->draw_gbuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CLIP_DISTANCE0);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
   {
@@ -157,7 +161,7 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
 
 void Renderer::run_technique(Technique& technique, gl::PassTimer* timer) {
   bind_frame_inputs();
-  TechniqueInputs in{gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer};
+  TechniqueInputs in{*this, gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer};
   technique.run(in, reflection_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_TEXTURE_UPDATE_BARRIER_BIT);

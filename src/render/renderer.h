@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image.h"
 #include "gl/program.h"
 #include "gl/timer.h"
 #include "render/camera.h"
@@ -32,16 +33,7 @@ ViewMode parse_view_mode(const std::string& name);  // throws InputError
 struct FrameSettings {
   float exposure = 0.0f;             // stops, applied before tone mapping
   float reflective_f0 = 0.1f;        // pixels whose max F0 reaches this do reflection work
-};
-
-// CPU copies of the frame (bottom-up rows as GL returns them are flipped: row 0 is the top).
-struct RgbaImage8 {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> pixels;  // RGBA8, sRGB encoded
-};
-struct RgbaImageF {
-  int width = 0, height = 0;
-  std::vector<float> pixels;         // RGBA32F, linear
+  glm::vec4 clip_plane{0, 0, 0, 1};  // world plane; the G-buffer keeps dot(plane, (p,1)) >= 0
 };
 
 class Renderer {
@@ -75,6 +67,11 @@ class Renderer {
   const gl::Texture2D& color() const { return color_; }
   const gl::Texture2D& display() const { return display_; }  // RGBA8 (sRGB values)
   const CameraMatrices& matrices() const { return matrices_; }
+  const Camera& camera() const { return camera_; }
+  const GpuScene& gpu_scene() const { return *gpu_scene_; }
+  GLuint frame_ubo() const { return frame_ubo_.id(); }
+  // Binds the frame UBO, lights and every target at their named slots (DESIGN: shared/bindings.h).
+  void bind_frame_inputs() const;
 
   RgbaImage8 read_display() const;
   RgbaImageF read_linear() const;              // the displayed view's linear values
@@ -82,7 +79,6 @@ class Renderer {
   std::vector<float> read_depth() const;       // reversed-Z, row 0 = top
 
  private:
-  void bind_frame_inputs() const;
   Scene scene_;
   gl::ShaderSource shaders_;
   std::unique_ptr<GpuScene> gpu_scene_;
@@ -92,6 +88,7 @@ class Renderer {
   gl::Buffer frame_ubo_;
   gl::Program gbuffer_prog_, lighting_prog_, composite_prog_, display_prog_;
   CameraMatrices matrices_{};
+  Camera camera_{};
   int frame_index_ = 0;
 };
 

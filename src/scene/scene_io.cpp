@@ -45,29 +45,29 @@
 // Ni -> reflectance and ior, map_Kd -> albedo texture, norm (else bump / map_bump) -> normal
 // texture (-bm -> normal strength). MTL files and textures must stay inside the root directory
 // (the OBJ's directory, or the JSON file's directory for OBJs placed by a scene file).
-// Vertex::uv follows the Image convention: v = 0 is the top row, so OBJ's v is flipped (1 - v).
+// Vertex::uv is the OBJ's vt unchanged: v grows upwards, v = 0 is the image's bottom row (the
+// convention of meshgen.cpp; the renderer flips Image rows on upload).
 // Missing normals (or zero-length ones) become the face normal; zero-area triangles are dropped.
 #include "scene/scene_io.h"
 
-#include <tiny_obj_loader.h>
 #include <stb_image.h>
+#include <tiny_obj_loader.h>
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string_view>
 #include <unordered_map>
-
-#include <glm/gtc/matrix_transform.hpp>
-#include <nlohmann/json.hpp>
 
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
@@ -83,25 +83,31 @@ constexpr std::uintmax_t kMaxObjBytes = 1ull << 30;    // 1 GiB
 constexpr std::uintmax_t kMaxMtlBytes = 64ull << 20;   // 64 MiB
 constexpr std::uintmax_t kMaxJsonBytes = 16ull << 20;  // 16 MiB
 constexpr std::uintmax_t kMaxImageBytes = 256ull << 20;
-constexpr std::size_t kMaxTriangles = 50'000'000;      // per file and per scene
-constexpr std::size_t kMaxAttributes = 50'000'000;     // each of v, vt, vn
+constexpr std::size_t kMaxTriangles = 50'000'000;   // per file and per scene
+constexpr std::size_t kMaxAttributes = 50'000'000;  // each of v, vt, vn
 constexpr std::size_t kMaxFaceVertices = 256;
 constexpr int kMaxImageSide = 16384;
-constexpr float kMaxCoord = 1e7f;                      // as in validate()
+constexpr float kMaxCoord = 1e7f;  // as in validate()
 
 // ---- errors ---------------------------------------------------------------------------------
 
 // Throws InputError with `msg` as one sentence: no line breaks, one final full stop.
 [[noreturn]] void fail(std::string msg) {
   for (char& c : msg)
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
   while (!msg.empty() && (msg.back() == ' ' || msg.back() == '.')) msg.pop_back();
   throw InputError(msg + ".");
 }
 
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-std::string q(std::string_view s) { return "'" + std::string(s) + "'"; }
-std::string q(const std::string& s) { return "'" + s + "'"; }
+// 'text' (built with append: GCC 12 warns wrongly about "'" + std::string at -O2, PR 105329).
+std::string q(std::string_view s) {
+  std::string r;
+  r.reserve(s.size() + 2);
+  r.append(1, '\'').append(s).append(1, '\'');
+  return r;
+}
+std::string q(const std::string& s) { return q(std::string_view(s)); }
+std::string q(const fs::path& p) { return q(std::string_view(p.native())); }
 
 // ---- files ----------------------------------------------------------------------------------
 
@@ -116,8 +122,8 @@ std::string read_file(const fs::path& path, std::uintmax_t cap, const std::strin
   const std::uintmax_t size = fs::file_size(path, ec);
   if (ec) fail(context + what + " " + q(path) + " could not be read (" + ec.message() + ")");
   if (size > cap)
-    fail(context + what + " " + q(path) + " is " + std::to_string(size) +
-         " bytes, more than the " + std::to_string(cap) + " supported");
+    fail(context + what + " " + q(path) + " is " + std::to_string(size) + " bytes, more than the " +
+         std::to_string(cap) + " supported");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(context + what + " " + q(path) + " could not be opened");
   std::string text(static_cast<std::size_t>(size), '\0');
@@ -134,8 +140,7 @@ fs::path resolve_inside(const fs::path& root, const fs::path& base, std::string 
   if (rel.empty()) fail(context + what + " path is empty");
   const fs::path r(rel);
   if (r.has_root_path())
-    fail(context + what + " path " + q(rel) + " is absolute; it must be relative to " +
-         q(base));
+    fail(context + what + " path " + q(rel) + " is absolute; it must be relative to " + q(base));
   const fs::path full = (base / r).lexically_normal();
   fs::path croot, cfull;
   try {
@@ -188,8 +193,7 @@ std::optional<float> parse_float(std::string_view s) {
   if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
   float v = 0.0f;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v))
-    return std::nullopt;
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
   return v;
 }
 
@@ -198,8 +202,7 @@ std::optional<long long> parse_int(std::string_view s) {
   if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
   long long v = 0;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || v > 2147483647LL ||
-      v < -2147483647LL)
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || v > 2147483647LL || v < -2147483647LL)
     return std::nullopt;
   return v;
 }
@@ -293,7 +296,7 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
     tokenize(line, tok);
     if (tok.empty() || tok[0][0] == '#') return;
-    const std::string where = "MTL file " + q(path) + " line " + std::to_string(line_no) + ": ";
+    auto where = [&] { return "MTL file " + q(path) + " line " + std::to_string(line_no) + ": "; };
     const std::string_view key = tok[0];
     // Arguments up to a trailing comment.
     std::vector<std::string_view> args;
@@ -301,20 +304,18 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
 
     auto number = [&](std::string_view s) {
       const auto v = parse_float(s);
-      if (!v) fail(where + "'" + std::string(key) + "' has a malformed or non-finite number " + q(s));
+      if (!v) fail(where() + q(key) + " has a malformed or non-finite number " + q(s));
       return *v;
     };
     auto scalar = [&]() {
-      if (args.size() != 1)
-        fail(where + "'" + std::string(key) + "' needs exactly one number");
+      if (args.size() != 1) fail(where() + q(key) + " needs exactly one number");
       return number(args[0]);
     };
     auto colour = [&]() {
       if (!args.empty() && (args[0] == "spectral" || args[0] == "xyz"))
-        fail(where + "'" + std::string(key) + " " + std::string(args[0]) +
-             "' colours are not supported; use r g b");
-      if (args.size() != 1 && args.size() != 3)
-        fail(where + "'" + std::string(key) + "' needs 1 or 3 numbers");
+        fail(where() + q(std::string(key) + " " + std::string(args[0])) +
+             " colours are not supported; use r g b");
+      if (args.size() != 1 && args.size() != 3) fail(where() + q(key) + " needs 1 or 3 numbers");
       const float r = number(args[0]);
       return args.size() == 1 ? glm::vec3(r) : glm::vec3(r, number(args[1]), number(args[2]));
     };
@@ -329,14 +330,14 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
           if (n == 0) first = *parse_float(tok[i]);
           ++n, ++i;
         }
-        if (n < min_n) fail(where + "texture option '" + opt + "' needs a number");
+        if (n < min_n) fail(where() + "texture option '" + opt + "' needs a number");
         return first;
       };
       while (i < tok.size() && tok[i].size() > 1 && tok[i][0] == '-') {
         const std::string opt(tok[i++]);
         if (opt == "-blendu" || opt == "-blendv" || opt == "-clamp") {
           if (i >= tok.size() || (tok[i] != "on" && tok[i] != "off"))
-            fail(where + "texture option '" + opt + "' needs 'on' or 'off'");
+            fail(where() + "texture option '" + opt + "' needs 'on' or 'off'");
           ++i;
         } else if (opt == "-boost" || opt == "-texres") {
           numbers(1, 1, opt);
@@ -347,13 +348,13 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
         } else if (opt == "-o" || opt == "-s" || opt == "-t") {
           numbers(1, 3, opt);
         } else if (opt == "-type" || opt == "-imfchan" || opt == "-colorspace") {
-          if (i >= tok.size()) fail(where + "texture option '" + opt + "' needs a value");
+          if (i >= tok.size()) fail(where() + "texture option '" + opt + "' needs a value");
           ++i;
         } else {
-          fail(where + "unknown texture option " + q(opt));
+          fail(where() + "unknown texture option " + q(opt));
         }
       }
-      if (i >= tok.size()) fail(where + "'" + std::string(key) + "' needs a file name");
+      if (i >= tok.size()) fail(where() + q(key) + " needs a file name");
       // The file name runs to the end of the line (it may contain spaces).
       std::string_view rest = line.substr(static_cast<std::size_t>(tok[i].data() - line.data()));
       while (!rest.empty() && is_space(rest.back())) rest.remove_suffix(1);
@@ -365,10 +366,10 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
       std::string_view name = line.substr(static_cast<std::size_t>(key.data() - line.data()) + 6);
       while (!name.empty() && is_space(name.front())) name.remove_prefix(1);
       while (!name.empty() && is_space(name.back())) name.remove_suffix(1);
-      if (name.empty()) fail(where + "'newmtl' needs a material name");
+      if (name.empty()) fail(where() + "'newmtl' needs a material name");
       for (const MtlMaterial& m : out)
         if (m.name == name)
-          fail(where + "material " + q(name) + " is defined twice (first in " + q(m.mtl_file) +
+          fail(where() + "material " + q(name) + " is defined twice (first in " + q(m.mtl_file) +
                " line " + std::to_string(m.line) + ")");
       out.push_back(MtlMaterial{});
       cur = &out.back();
@@ -378,11 +379,11 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
       return;
     }
     static const std::set<std::string_view> kKnown = {
-        "Ka", "Kd", "Ks", "Ke", "Kt", "Tf", "Ns", "Ni", "d", "Tr", "Pr", "Pm", "Ps", "Pc",
-        "Pcr", "aniso", "anisor", "illum", "sharpness", "map_Kd", "norm", "bump", "map_bump",
-        "map_Bump"};
+        "Ka",     "Kd",    "Ks",        "Ke",     "Kt",   "Tf",   "Ns",       "Ni",
+        "d",      "Tr",    "Pr",        "Pm",     "Ps",   "Pc",   "Pcr",      "aniso",
+        "anisor", "illum", "sharpness", "map_Kd", "norm", "bump", "map_bump", "map_Bump"};
     if (!kKnown.count(key)) return;  // other statements (map_Ks, refl, ...) are not used
-    if (!cur) fail(where + "'" + std::string(key) + "' comes before any 'newmtl'");
+    if (!cur) fail(where() + q(key) + " comes before any 'newmtl'");
     if (key == "Kd") {
       cur->kd = colour();
       cur->has_kd = true;
@@ -402,8 +403,7 @@ void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::s
       if (!args.empty() && args[0] == "-halo") args.erase(args.begin());
       scalar();
     } else if (key == "illum") {
-      if (args.size() != 1 || !parse_int(args[0]))
-        fail(where + "'illum' needs one integer");
+      if (args.size() != 1 || !parse_int(args[0])) fail(where() + "'illum' needs one integer");
     } else if (key == "map_Kd") {
       cur->map_kd = texture();
     } else if (key == "norm") {
@@ -498,15 +498,15 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
     tokenize(line, tok);
     if (tok.empty() || tok[0][0] == '#') return;
-    const std::string where = "OBJ file " + q(path) + " line " + std::to_string(line_no) + ": ";
+    auto where = [&] { return "OBJ file " + q(path) + " line " + std::to_string(line_no) + ": "; };
     const std::string_view key = tok[0];
     auto numbers = [&](std::size_t min_n, std::size_t max_n, const char* what) {
       std::size_t n = 0;
       for (std::size_t i = 1; i < tok.size() && tok[i][0] != '#'; ++i, ++n)
         if (!parse_float(tok[i]))
-          fail(where + what + " has a malformed or non-finite number " + q(tok[i]));
+          fail(where() + what + " has a malformed or non-finite number " + q(tok[i]));
       if (n < min_n || n > max_n)
-        fail(where + what + " needs " + std::to_string(min_n) +
+        fail(where() + what + " needs " + std::to_string(min_n) +
              (min_n == max_n ? "" : " to " + std::to_string(max_n)) + " numbers, not " +
              std::to_string(n));
     };
@@ -527,11 +527,12 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
     } else if (key == "f" || key == "l" || key == "p") {
       const char* what = key == "f" ? "face" : key == "l" ? "line" : "point";
       const std::size_t n = tok.size() - 1;
-      if (key == "f" && n < 3) fail(where + "a face needs at least 3 vertices, not " + std::to_string(n));
-      if (n < 1) fail(where + std::string(what) + " has no vertices");
+      if (key == "f" && n < 3)
+        fail(where() + "a face needs at least 3 vertices, not " + std::to_string(n));
+      if (n < 1) fail(where() + std::string(what) + " has no vertices");
       if (n > kMaxFaceVertices)
-        fail(where + std::string(what) + " has " + std::to_string(n) + " vertices, more than the " +
-             std::to_string(kMaxFaceVertices) + " supported");
+        fail(where() + std::string(what) + " has " + std::to_string(n) +
+             " vertices, more than the " + std::to_string(kMaxFaceVertices) + " supported");
       for (std::size_t i = 1; i < tok.size(); ++i) {
         // i, i/j, i//k, i/j/k
         std::string_view parts[3];
@@ -539,13 +540,14 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
         std::string_view t = tok[i];
         while (true) {
           const std::size_t slash = t.find('/');
-          if (nparts == 3) fail(where + std::string(what) + " vertex " + q(tok[i]) + " has more than 3 indices");
+          if (nparts == 3)
+            fail(where() + std::string(what) + " vertex " + q(tok[i]) + " has more than 3 indices");
           parts[nparts++] = t.substr(0, slash);
           if (slash == std::string_view::npos) break;
           t.remove_prefix(slash + 1);
         }
         if (nparts == 2 && parts[1].empty())
-          fail(where + std::string(what) + " vertex " + q(tok[i]) + " is malformed");
+          fail(where() + std::string(what) + " vertex " + q(tok[i]) + " is malformed");
         struct Kind {
           const char* name;
           const char* plural;
@@ -558,16 +560,16 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
           if (k == 1 && parts[k].empty() && nparts == 3) continue;  // i//k
           const auto idx = parse_int(parts[k]);
           if (!idx)
-            fail(where + std::string(what) + " has a malformed " + kinds[k].name + " index " +
+            fail(where() + std::string(what) + " has a malformed " + kinds[k].name + " index " +
                  q(parts[k]) + (parts[k] == tok[i] ? std::string() : " in " + q(tok[i])));
           if (*idx == 0)
-            fail(where + std::string(what) + " has " + kinds[k].name +
+            fail(where() + std::string(what) + " has " + kinds[k].name +
                  " index 0 (OBJ indices start at 1)");
           if (*idx < 0 && static_cast<std::size_t>(-*idx) > kinds[k].count)
-            fail(where + std::string(what) + " has relative " + kinds[k].name + " index " +
+            fail(where() + std::string(what) + " has relative " + kinds[k].name + " index " +
                  std::to_string(*idx) + " but only " + std::to_string(kinds[k].count) + " " +
                  (kinds[k].count == 1 ? std::string(kinds[k].name) + " precedes it"
-                                     : std::string(kinds[k].plural) + " precede it"));
+                                      : std::string(kinds[k].plural) + " precede it"));
           if (*idx > kinds[k].max->index) *kinds[k].max = Deferred{*idx, line_no};
         }
       }
@@ -598,20 +600,18 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
       }
       flush();
     } else if (key == "t" || key == "vw") {
-      fail(where + "the tinyobjloader extension '" + std::string(key) + "' is not supported");
+      fail(where() + "the tinyobjloader extension " + q(key) + " is not supported");
     }
   });
   const Deferred* maxes[3] = {&max_v, &max_vt, &max_vn};
   const std::size_t counts[3] = {s.nv, s.nvt, s.nvn};
-  const char* names[3][2] = {{"vertex", "vertices"},
-                             {"texture coordinate", "texture coordinates"},
-                             {"normal", "normals"}};
+  const char* names[3][2] = {
+      {"vertex", "vertices"}, {"texture coordinate", "texture coordinates"}, {"normal", "normals"}};
   for (int k = 0; k < 3; ++k)
     if (maxes[k]->index > 0 && static_cast<std::size_t>(maxes[k]->index) > counts[k])
-      fail("OBJ file " + q(path) + " line " + std::to_string(maxes[k]->line) + ": " +
-           names[k][0] + " index " + std::to_string(maxes[k]->index) +
-           " is past the end (the file has " + std::to_string(counts[k]) + " " +
-           names[k][counts[k] == 1 ? 0 : 1] + ")");
+      fail("OBJ file " + q(path) + " line " + std::to_string(maxes[k]->line) + ": " + names[k][0] +
+           " index " + std::to_string(maxes[k]->index) + " is past the end (the file has " +
+           std::to_string(counts[k]) + " " + names[k][counts[k] == 1 ? 0 : 1] + ")");
   return s;
 }
 
@@ -769,8 +769,8 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     const tinyobj::mesh_t& sm = shapes[si].mesh;
     const std::size_t nfaces = sm.num_face_vertices.size();
     if (sm.indices.size() != nfaces * 3 || sm.material_ids.size() != nfaces)
-      fail("OBJ file " + q(path) + " was read inconsistently (shape " +
-           q(shapes[si].name) + " has mismatched face counts)");
+      fail("OBJ file " + q(path) + " was read inconsistently (shape " + q(shapes[si].name) +
+           " has mismatched face counts)");
     struct Builder {
       int material;
       Mesh mesh;
@@ -784,8 +784,10 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
       tinyobj::index_t c[3] = {sm.indices[3 * f], sm.indices[3 * f + 1], sm.indices[3 * f + 2]};
       for (const tinyobj::index_t& ix : c) {
         if (ix.vertex_index < 0 || static_cast<std::size_t>(ix.vertex_index) >= nv ||
-            ix.texcoord_index < -1 || (ix.texcoord_index >= 0 && static_cast<std::size_t>(ix.texcoord_index) >= nvt) ||
-            ix.normal_index < -1 || (ix.normal_index >= 0 && static_cast<std::size_t>(ix.normal_index) >= nvn))
+            ix.texcoord_index < -1 ||
+            (ix.texcoord_index >= 0 && static_cast<std::size_t>(ix.texcoord_index) >= nvt) ||
+            ix.normal_index < -1 ||
+            (ix.normal_index >= 0 && static_cast<std::size_t>(ix.normal_index) >= nvn))
           fail("OBJ file " + q(path) + ": face " + std::to_string(f + 1) + " of shape " +
                q(shapes[si].name) + " has an index out of range");
       }
@@ -807,7 +809,8 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
         b = builders.end() - 1;
       }
       for (const tinyobj::index_t& ix : c) {
-        const bool has_normal = ix.normal_index >= 0 && wnrm_ok[static_cast<std::size_t>(ix.normal_index)];
+        const bool has_normal =
+            ix.normal_index >= 0 && wnrm_ok[static_cast<std::size_t>(ix.normal_index)];
         const CornerKey key{ix.vertex_index, ix.texcoord_index, ix.normal_index};
         if (has_normal) {
           if (auto it = b->corners.find(key); it != b->corners.end()) {
@@ -818,10 +821,12 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
         Vertex v;
         v.position = wpos[static_cast<std::size_t>(ix.vertex_index)];
         v.normal = has_normal ? wnrm[static_cast<std::size_t>(ix.normal_index)] : face_normal;
-        v.uv = ix.texcoord_index >= 0
-                   ? glm::vec2(attrib.texcoords[2 * static_cast<std::size_t>(ix.texcoord_index)],
-                               1.0f - attrib.texcoords[2 * static_cast<std::size_t>(ix.texcoord_index) + 1])
-                   : glm::vec2(0.0f);
+        if (ix.texcoord_index >= 0) {
+          const std::size_t t = 2 * static_cast<std::size_t>(ix.texcoord_index);
+          v.uv = glm::vec2(attrib.texcoords[t], attrib.texcoords[t + 1]);  // as in the OBJ
+        } else {
+          v.uv = glm::vec2(0.0f);
+        }
         v.tangent = glm::vec4(0.0f);
         const auto vi = static_cast<std::uint32_t>(b->mesh.vertices.size());
         b->mesh.vertices.push_back(v);
@@ -832,9 +837,10 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     const std::string shape_name = shapes[si].name.empty() ? stem : shapes[si].name;
     for (Builder& b : builders) {
       b.corners = {};
-      b.mesh.name = builders.size() > 1
-                        ? shape_name + ":" + scene.materials[static_cast<std::size_t>(b.material)].name
-                        : shape_name;
+      b.mesh.name =
+          builders.size() > 1
+              ? shape_name + ":" + scene.materials[static_cast<std::size_t>(b.material)].name
+              : shape_name;
       b.mesh.material = b.material;
       meshgen::compute_tangents(b.mesh);
       fix_tangents(b.mesh);
@@ -969,12 +975,12 @@ class JsonReader {
       fail_at(where, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
     return static_cast<int>(v);
   }
-  glm::vec3 vec3(const json& j, const std::string& where, float lo = -1e7f,
-                 float hi = 1e7f) const {
+  glm::vec3 vec3(const json& j, const std::string& where, float lo = -1e7f, float hi = 1e7f) const {
     if (!j.is_array() || j.size() != 3) fail_at(where, "must be an array of 3 numbers");
     glm::vec3 v;
     for (int i = 0; i < 3; ++i) {
-      if (!j[static_cast<std::size_t>(i)].is_number()) fail_at(where, "must be an array of 3 numbers");
+      if (!j[static_cast<std::size_t>(i)].is_number())
+        fail_at(where, "must be an array of 3 numbers");
       v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
     }
     return v;
@@ -991,7 +997,8 @@ class JsonReader {
     if (!j.is_array() || j.size() != 2) fail_at(where, "must be an array of 2 numbers");
     glm::vec2 v;
     for (int i = 0; i < 2; ++i) {
-      if (!j[static_cast<std::size_t>(i)].is_number()) fail_at(where, "must be an array of 2 numbers");
+      if (!j[static_cast<std::size_t>(i)].is_number())
+        fail_at(where, "must be an array of 2 numbers");
       v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
     }
     return v;
@@ -1056,9 +1063,8 @@ json parse_json_file(const fs::path& path) {
     std::smatch m;
     if (std::regex_search(what, m, re))
       fail("scene file " + q(path) + " has a JSON syntax error at line " + m[1].str() +
-           ", column " + m[2].str() + ": " + m[3].str());
-    fail("scene file " + q(path) + " has a JSON syntax error near byte " +
-         std::to_string(e.byte));
+           ", column " + (m[2].str() == "0" ? std::string("1") : m[2].str()) + ": " + m[3].str());
+    fail("scene file " + q(path) + " has a JSON syntax error near byte " + std::to_string(e.byte));
   }
   if (!duplicate.empty()) fail("scene file " + q(path) + " has the key " + q(duplicate) + " twice");
   if (!j.is_object()) fail("scene file " + q(path) + " must hold a JSON object");
@@ -1139,8 +1145,9 @@ void read_materials(const JsonReader& r, const json& j, Scene& s, LoadContext& c
   for (auto it = j.begin(); it != j.end(); ++it) {
     const std::string where = "materials." + it.key();
     const json& m = r.object(it.value(), where);
-    r.keys(m, where, {"albedo", "metallic", "roughness", "reflectance", "emission",
-                      "albedo_texture", "normal_texture", "normal_strength", "transparent", "ior"});
+    r.keys(m, where,
+           {"albedo", "metallic", "roughness", "reflectance", "emission", "albedo_texture",
+            "normal_texture", "normal_strength", "transparent", "ior"});
     Material mat;
     mat.name = it.key();
     if (mat.name.empty()) r.fail_at(where, "needs a non-empty name");
@@ -1171,8 +1178,8 @@ int find_material(const JsonReader& r, const Scene& s, const json& obj, const st
   std::string list;
   for (const Material& m : s.materials) list += (list.empty() ? "" : ", ") + m.name;
   r.fail_at(JsonReader::join(where, "material"),
-            "names the unknown material " + q(name) + " (materials: " +
-                (list.empty() ? "none" : list) + ")");
+            "names the unknown material " + q(name) +
+                " (materials: " + (list.empty() ? "none" : list) + ")");
 }
 
 void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
@@ -1187,8 +1194,7 @@ void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
     const std::string context = "scene file " + q(r.file()) + ": " + q(where + ".obj") + ": ";
     const fs::path obj = resolve_inside(dir, dir, rel, context, "OBJ");
     std::error_code ec;
-    if (!fs::is_regular_file(obj, ec))
-      fail(context + "OBJ file " + q(obj) + " does not exist");
+    if (!fs::is_regular_file(obj, ec)) fail(context + "OBJ file " + q(obj) + " does not exist");
     const int material = m.contains("material") ? find_material(r, s, m, where) : -1;
     const glm::mat4 transform = read_transform(r, m, where);
     int reflector = 0;
@@ -1216,8 +1222,8 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s) {
     const json& p = r.object(j[i], where);
     if (!p.contains("type")) r.fail_at(where + ".type", "is required");
     const std::string type = r.string(p["type"], where + ".type");
-    const std::initializer_list<std::string_view> common = {"type", "name", "material", "translate",
-                                                            "rotate_deg", "scale", "reflector"};
+    const std::initializer_list<std::string_view> common = {
+        "type", "name", "material", "translate", "rotate_deg", "scale", "reflector"};
     auto allowed = [&](std::initializer_list<std::string_view> extra) {
       std::vector<std::string_view> all(common);
       all.insert(all.end(), extra);
@@ -1264,7 +1270,8 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s) {
         if (type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
         if (rj.get<bool>()) {
           Reflector refl;
-          const glm::vec3 tx(transform * glm::vec4(1, 0, 0, 0)), tz(transform * glm::vec4(0, 0, 1, 0));
+          const glm::vec3 tx(transform * glm::vec4(1, 0, 0, 0)),
+              tz(transform * glm::vec4(0, 0, 1, 0));
           refl.center = glm::vec3(transform * glm::vec4(0, 0, 0, 1));
           refl.tangent = glm::normalize(tx);
           refl.bitangent = glm::normalize(tz);
@@ -1318,7 +1325,8 @@ void read_cameras(const JsonReader& r, const json& j, Scene& s) {
     Camera cam;
     cam.name = r.string(c, where, "name", i == 0 ? "default" : "camera" + std::to_string(i));
     for (const Camera& other : s.cameras)
-      if (other.name == cam.name) r.fail_at(where + ".name", "repeats the camera name " + q(cam.name));
+      if (other.name == cam.name)
+        r.fail_at(where + ".name", "repeats the camera name " + q(cam.name));
     cam.position = r.vec3(c, where, "position", cam.position);
     cam.target = r.vec3(c, where, "target", cam.target);
     if (c.contains("up")) cam.up = r.direction(c["up"], where + ".up");
@@ -1357,8 +1365,9 @@ int append_obj(Scene& scene, const fs::path& path, const glm::mat4& transform,
                int material_override) {
   LoadContext ctx;
   ctx.triangles = scene.triangle_count();
-  return append_obj_impl(scene, ctx, path, path.parent_path().empty() ? fs::path(".") : path.parent_path(),
-                         transform, material_override);
+  return append_obj_impl(scene, ctx, path,
+                         path.parent_path().empty() ? fs::path(".") : path.parent_path(), transform,
+                         material_override);
 }
 
 Scene load_scene_obj(const fs::path& path) {
@@ -1376,8 +1385,9 @@ Scene load_scene_json(const fs::path& path) {
   const json j = parse_json_file(path);
   const JsonReader r(path);
   const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  r.keys(j, "", {"name", "description", "ambient", "environment", "materials", "meshes",
-                 "primitives", "lights", "cameras"});
+  r.keys(j, "",
+         {"name", "description", "ambient", "environment", "materials", "meshes", "primitives",
+          "lights", "cameras"});
   Scene s;
   LoadContext ctx;
   s.name = r.string(j, "", "name", path.stem().string());
@@ -1411,7 +1421,8 @@ Scene load_scene(const std::string& name_or_path) {
       return s;
     }
   const fs::path p(name_or_path);
-  const bool is_json = ends_with_ci(name_or_path, ".json"), is_obj = ends_with_ci(name_or_path, ".obj");
+  const bool is_json = ends_with_ci(name_or_path, ".json"),
+             is_obj = ends_with_ci(name_or_path, ".obj");
   if (is_json || is_obj) {
     std::error_code ec;
     if (!fs::exists(p, ec)) fail("scene file " + q(p) + " does not exist");
@@ -1419,8 +1430,8 @@ Scene load_scene(const std::string& name_or_path) {
   }
   std::error_code ec;
   if (fs::exists(p, ec))
-    fail("scene file " + q(p) + " is neither a .json nor an .obj file (built-in scenes: " +
-         builtin_names() + ")");
+    fail("scene file " + q(p) +
+         " is neither a .json nor an .obj file (built-in scenes: " + builtin_names() + ")");
   fail("unknown scene " + q(name_or_path) + ": give a built-in name (" + builtin_names() +
        ") or a .json or .obj file");
 }

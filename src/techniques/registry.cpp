@@ -6,12 +6,15 @@ namespace ssr {
 // One line per technique; each factory lives in its technique's file.
 std::unique_ptr<Technique> make_none_technique();
 std::unique_ptr<Technique> make_linear_technique();
+std::unique_ptr<Technique> make_reference_technique();
 
 const std::vector<TechniqueInfo>& technique_registry() {
   static const std::vector<TechniqueInfo> registry = {
       {"none", "no reflections: the composite shows the environment only", make_none_technique},
       {"linear", "brute-force view-space linear march (Kim 2018, 2.3.1), optional depth interpolation",
        make_linear_technique},
+      {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
+       make_reference_technique},
   };
   return registry;
 }

@@ -21,9 +21,11 @@
 namespace ssr {
 
 struct Scene;
+class Renderer;
 
 // Everything a technique may read for one frame.
 struct TechniqueInputs {
+  const Renderer& renderer;   // camera, matrices, scene upload; bind_frame_inputs() to restore
   const GBuffer& gbuffer;
   const gl::Texture2D& lit;   // RGBA16F lit colour without reflections (bilinear filtering on)
   GLuint frame_ubo;           // FrameUniforms, bound at UBO_FRAME

@@ -2,10 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
@@ -42,7 +41,8 @@ void expect_message(const std::string& msg, const std::vector<std::string>& frag
   ASSERT_FALSE(msg.empty());
   EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
   EXPECT_EQ(msg.back(), '.') << msg;
-  for (const std::string& f : fragments) EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
+  for (const std::string& f : fragments)
+    EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
 }
 
 const ssr::Mesh* find_mesh(const Scene& s, const std::string& name) {
@@ -103,15 +103,15 @@ TEST(ObjLoad, CubeMaterialsTexturesAndMeshes) {
     }
   }
 
-  // uv: OBJ's v is flipped (vt 0 0.25 -> v = 0.75).
+  // uv: as written in the OBJ (OpenGL convention, v up; no flip).
   bool found = false;
   for (const ssr::Vertex& v : red->vertices)
-    if (std::abs(v.uv.y - 0.75f) < 1e-6f && v.uv.x == 0.0f) found = true;
+    if (v.uv == glm::vec2(0.0f, 0.25f)) found = true;
   EXPECT_TRUE(found);
 
   const ssr::Material& rm = s.materials[static_cast<std::size_t>(red->material)];
   EXPECT_EQ(rm.name, "red");
-  EXPECT_EQ(rm.albedo, glm::vec3(1.0f, 0.2f, 0.1f));  // Kd 1.5 clamped
+  EXPECT_EQ(rm.albedo, glm::vec3(1.0f, 0.2f, 0.1f));           // Kd 1.5 clamped
   EXPECT_NEAR(rm.roughness, std::sqrt(2.0f / 100.0f), 1e-6f);  // from Ns 98
   EXPECT_EQ(rm.metallic, 0.0f);
   ASSERT_EQ(rm.albedo_texture, 0);
@@ -120,8 +120,10 @@ TEST(ObjLoad, CubeMaterialsTexturesAndMeshes) {
   ASSERT_EQ(im.width, 2);
   ASSERT_EQ(im.height, 2);
   ASSERT_EQ(im.rgba.size(), 16u);
-  EXPECT_EQ(std::vector<int>(im.rgba.begin(), im.rgba.begin() + 4), (std::vector<int>{255, 0, 0, 255}));
-  EXPECT_EQ(std::vector<int>(im.rgba.begin() + 12, im.rgba.end()), (std::vector<int>{255, 255, 255, 128}));
+  EXPECT_EQ(std::vector<int>(im.rgba.begin(), im.rgba.begin() + 4),
+            (std::vector<int>{255, 0, 0, 255}));
+  EXPECT_EQ(std::vector<int>(im.rgba.begin() + 12, im.rgba.end()),
+            (std::vector<int>{255, 255, 255, 128}));
 
   const ssr::Material& lm = s.materials[static_cast<std::size_t>(lamp->material)];
   EXPECT_EQ(lm.name, "lamp");
@@ -190,25 +192,33 @@ INSTANTIATE_TEST_SUITE_P(
     Obj, MalformedObj,
     testing::Values(
         BadFile{"obj/bad_negative_index.obj", {"bad_negative_index.obj", "line 4", "-9", "only 3"}},
-        BadFile{"obj/bad_index_past_end.obj", {"bad_index_past_end.obj", "line 5", "index 4", "past the end"}},
-        BadFile{"obj/bad_normal_index.obj", {"bad_normal_index.obj", "line 5", "normal index 2", "past the end"}},
-        BadFile{"obj/bad_texcoord_index.obj", {"bad_texcoord_index.obj", "line 5", "-2", "texture coordinate"}},
+        BadFile{"obj/bad_index_past_end.obj",
+                {"bad_index_past_end.obj", "line 5", "index 4", "past the end"}},
+        BadFile{"obj/bad_normal_index.obj",
+                {"bad_normal_index.obj", "line 5", "normal index 2", "past the end"}},
+        BadFile{"obj/bad_texcoord_index.obj",
+                {"bad_texcoord_index.obj", "line 5", "-2", "texture coordinate"}},
         BadFile{"obj/bad_zero_index.obj", {"bad_zero_index.obj", "line 4", "index 0"}},
         BadFile{"obj/bad_nan_vertex.obj", {"bad_nan_vertex.obj", "line 2", "'nan'"}},
         BadFile{"obj/bad_huge_vertex.obj", {"bad_huge_vertex.obj", "line 3", "'1e39'"}},
         BadFile{"obj/bad_garbage_number.obj", {"bad_garbage_number.obj", "line 2", "'abc'"}},
         BadFile{"obj/bad_garbage_index.obj", {"bad_garbage_index.obj", "line 4", "'2x'"}},
-        BadFile{"obj/bad_face_two_vertices.obj", {"bad_face_two_vertices.obj", "line 3", "at least 3"}},
+        BadFile{"obj/bad_face_two_vertices.obj",
+                {"bad_face_two_vertices.obj", "line 3", "at least 3"}},
         BadFile{"obj/bad_no_faces.obj", {"bad_no_faces.obj", "no faces"}},
         BadFile{"obj/empty.obj", {"empty.obj", "is empty"}},
         BadFile{"obj/all_degenerate.obj", {"all_degenerate.obj", "non-zero area"}},
-        BadFile{"obj/bad_missing_texture.obj", {"missing_texture.mtl", "line 3", "gone.png", "does not exist"}},
-        BadFile{"obj/bad_escape_texture.obj", {"escape_texture.mtl", "line 3", "../json/meshes/tex.png", "escapes"}},
-        BadFile{"obj/bad_absolute_texture.obj", {"absolute_texture.mtl", "line 2", "/etc/hostname", "absolute"}},
+        BadFile{"obj/bad_missing_texture.obj",
+                {"missing_texture.mtl", "line 3", "gone.png", "does not exist"}},
+        BadFile{"obj/bad_escape_texture.obj",
+                {"escape_texture.mtl", "line 3", "../json/meshes/tex.png", "escapes"}},
+        BadFile{"obj/bad_absolute_texture.obj",
+                {"absolute_texture.mtl", "line 2", "/etc/hostname", "absolute"}},
         BadFile{"obj/bad_corrupt_texture.obj", {"corrupt.png", "not a readable image"}},
         BadFile{"obj/bad_mtl_nan.obj", {"nan.mtl", "line 2", "'Kd'", "'nan'"}},
         BadFile{"obj/bad_mtl_garbage.obj", {"garbage.mtl", "line 3", "'Ns'", "'1O0'"}},
-        BadFile{"obj/bad_missing_mtl.obj", {"bad_missing_mtl.obj", "line 1", "nowhere.mtl", "does not exist"}}),
+        BadFile{"obj/bad_missing_mtl.obj",
+                {"bad_missing_mtl.obj", "line 1", "nowhere.mtl", "does not exist"}}),
     [](const testing::TestParamInfo<BadFile>& info) {
       std::string name = std::string(info.param.file);
       name = name.substr(name.find('/') + 1);
@@ -310,24 +320,35 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"json/bad_unclosed.json", {"bad_unclosed.json", "line 5", "syntax error"}},
         BadFile{"json/empty.json", {"empty.json", "is empty"}},
         BadFile{"json/bad_not_object.json", {"bad_not_object.json", "object"}},
-        BadFile{"json/bad_unknown_key.json", {"bad_unknown_key.json", "unknown key", "'materials.floor.rougness'"}},
-        BadFile{"json/bad_unknown_top_key.json", {"bad_unknown_top_key.json", "unknown key", "'colour'"}},
-        BadFile{"json/bad_wrong_type.json", {"bad_wrong_type.json", "'materials.floor.roughness' must be a number"}},
-        BadFile{"json/bad_wrong_vec.json", {"bad_wrong_vec.json", "'meshes[0].translate'", "3 numbers"}},
-        BadFile{"json/bad_out_of_range.json", {"bad_out_of_range.json", "'materials.floor.roughness'", "[0, 1]"}},
-        BadFile{"json/bad_missing_mesh.json", {"bad_missing_mesh.json", "missing.obj", "does not exist"}},
+        BadFile{"json/bad_unknown_key.json",
+                {"bad_unknown_key.json", "unknown key", "'materials.floor.rougness'"}},
+        BadFile{"json/bad_unknown_top_key.json",
+                {"bad_unknown_top_key.json", "unknown key", "'colour'"}},
+        BadFile{"json/bad_wrong_type.json",
+                {"bad_wrong_type.json", "'materials.floor.roughness' must be a number"}},
+        BadFile{"json/bad_wrong_vec.json",
+                {"bad_wrong_vec.json", "'meshes[0].translate'", "3 numbers"}},
+        BadFile{"json/bad_out_of_range.json",
+                {"bad_out_of_range.json", "'materials.floor.roughness'", "[0, 1]"}},
+        BadFile{"json/bad_missing_mesh.json",
+                {"bad_missing_mesh.json", "missing.obj", "does not exist"}},
         BadFile{"json/bad_escape.json", {"bad_escape.json", "../obj/cube.obj", "escapes"}},
         BadFile{"json/bad_absolute.json", {"bad_absolute.json", "/etc/hostname.obj", "absolute"}},
-        BadFile{"json/bad_zero_reflector.json", {"bad_zero_reflector.json", "half_extents", "zero-area"}},
-        BadFile{"json/bad_skew_reflector.json", {"bad_skew_reflector.json", "'meshes[0].reflector'", "orthogonal"}},
-        BadFile{"json/bad_unknown_material.json", {"bad_unknown_material.json", "'meshes[0].material'", "'nope'"}},
+        BadFile{"json/bad_zero_reflector.json",
+                {"bad_zero_reflector.json", "half_extents", "zero-area"}},
+        BadFile{"json/bad_skew_reflector.json",
+                {"bad_skew_reflector.json", "'meshes[0].reflector'", "orthogonal"}},
+        BadFile{"json/bad_unknown_material.json",
+                {"bad_unknown_material.json", "'meshes[0].material'", "'nope'"}},
         BadFile{"json/bad_duplicate_key.json", {"bad_duplicate_key.json", "'name' twice"}},
         BadFile{"json/bad_light_key.json", {"bad_light_key.json", "'lights[0].direction'"}},
         BadFile{"json/bad_camera_up.json", {"bad_camera_up.json", "'cameras[0].up'", "parallel"}},
-        BadFile{"json/bad_primitive_type.json", {"bad_primitive_type.json", "'primitives[0].type'", "'torus'"}},
+        BadFile{"json/bad_primitive_type.json",
+                {"bad_primitive_type.json", "'primitives[0].type'", "'torus'"}},
         BadFile{"json/bad_zero_scale.json", {"bad_zero_scale.json", "'meshes[0].scale'"}},
         BadFile{"json/bad_no_meshes.json", {"bad_no_meshes.json", "no meshes"}},
-        BadFile{"json/bad_obj_inside.json", {"bad_obj_inside.json", "'meshes[0].obj'", "broken.obj", "line 3", "-5"}}),
+        BadFile{"json/bad_obj_inside.json",
+                {"bad_obj_inside.json", "'meshes[0].obj'", "broken.obj", "line 3", "-5"}}),
     [](const testing::TestParamInfo<BadFile>& info) {
       std::string name = std::string(info.param.file);
       name = name.substr(name.find('/') + 1);

@@ -148,7 +148,7 @@ png("checker.png", 32, 32,
 def bump(x, y):
     # tangent-space normals of a grid of shallow domes (+Y up in the image)
     cx, cy = (x % 16) - 7.5, (y % 16) - 7.5
-    nx, ny = -cx / 24.0, cy / 24.0
+    nx, ny = cx / 24.0, -cy / 24.0  # tilted away from each dome's centre (image y grows down)
     nz = math.sqrt(max(0.0, 1 - nx * nx - ny * ny))
     return tuple(int(round((c * 0.5 + 0.5) * 255)) for c in (nx, ny, nz))
 

@@ -1,0 +1,60 @@
+// Ground truth shading: for each reflective pixel, average its ray samples. A hit is shaded with
+// shade_surface (the lit pass's code) seen from the ray; an escaped ray sees the environment.
+// Also the screen-space ideal: the lit colour at the hit's pixel where the hit is traceable, the
+// environment where it is not (what a perfect screen-space tracer would return).
+#include "common/lighting.glsl"
+#include "shared/reference.h"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = SSBO_REF_SAMPLES) readonly buffer Samples { ReferenceSample samples[]; };
+layout(std430, binding = SSBO_REF_PIXELS) readonly buffer Pixels { ReferencePixel pixels[]; };
+layout(std430, binding = SSBO_REF_MATERIALS) readonly buffer Materials { ReferenceMaterial materials[]; };
+layout(binding = TEX_REF_MAP0) uniform sampler2D albedo_maps[REFERENCE_MAX_TEXTURES];
+layout(binding = TEX_LIT) uniform sampler2D lit_tex;
+layout(binding = IMG_REF_TRUTH, rgba16f) uniform writeonly image2D out_truth;
+layout(binding = IMG_REF_IDEAL, rgba16f) uniform writeonly image2D out_ideal;
+layout(location = 0) uniform int u_pixel_count;
+
+// Sampler arrays may only be indexed by constant expressions in GLSL 4.50: one branch per slot.
+vec3 albedo_map(int slot, vec2 uv, float lod_uv) {
+  vec3 c = vec3(1.0);
+#define SSR_MAP_CASE(i) \
+  if (slot == i) c = textureLod(albedo_maps[i], uv, lod_uv + log2(float(textureSize(albedo_maps[i], 0).x))).rgb;
+  SSR_MAP_CASE(0) SSR_MAP_CASE(1) SSR_MAP_CASE(2) SSR_MAP_CASE(3)
+  SSR_MAP_CASE(4) SSR_MAP_CASE(5) SSR_MAP_CASE(6) SSR_MAP_CASE(7)
+  return c;
+}
+
+void main() {
+  int i = int(gl_GlobalInvocationID.x);
+  if (i >= u_pixel_count) return;
+  ivec4 px = pixels[i].data;
+  vec3 truth = vec3(0.0), ideal = vec3(0.0);
+  for (int k = 0; k < px.w; ++k) {
+    ReferenceSample s = samples[px.z + k];
+    vec3 dir = s.direction.xyz;
+    vec3 env = environment_radiance(dir);
+    int m = int(s.position.w);
+    if (m < 0) {
+      truth += env;
+    } else {
+      ReferenceMaterial mat = materials[m];
+      Surface surf;
+      surf.pos_ws = s.position.xyz;
+      surf.n_ws = s.normal.xyz;
+      surf.albedo = mat.albedo_metallic.rgb;
+      int slot = int(mat.params.z);
+      if (slot >= 0) surf.albedo *= albedo_map(slot, s.hit_pixel.zw, s.normal.w);
+      surf.metallic = mat.albedo_metallic.a;
+      surf.roughness = mat.params.x;
+      surf.reflectance = mat.params.y;
+      surf.emission = mat.emission.rgb;
+      truth += shade_surface(surf, -dir);
+    }
+    ideal += s.direction.w > 0.5 ? texelFetch(lit_tex, ivec2(s.hit_pixel.xy), 0).rgb : env;
+  }
+  float inv = px.w > 0 ? 1.0 / float(px.w) : 0.0;
+  float a = px.w > 0 ? 1.0 : 0.0;
+  imageStore(out_truth, px.xy, vec4(truth * inv, a));
+  imageStore(out_ideal, px.xy, vec4(ideal * inv, a));
+}

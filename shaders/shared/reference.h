@@ -1,0 +1,34 @@
+// Layouts of the ground truth's GPU shading pass (C++ traces with Embree, the GPU shades the hits
+// with the lit pass's own shade_surface, seen from the ray).
+#include "shared/interop.h"
+
+SSR_SHARED_BEGIN
+
+#define REFERENCE_MAX_TEXTURES 8  // albedo maps the shading pass can sample (texture units)
+#define SSBO_REF_SAMPLES 1
+#define SSBO_REF_PIXELS 2
+#define SSBO_REF_MATERIALS 3
+#define TEX_REF_MAP0 10           // units TEX_REF_MAP0 .. TEX_REF_MAP0 + REFERENCE_MAX_TEXTURES - 1
+#define IMG_REF_TRUTH 0
+#define IMG_REF_IDEAL 1
+
+struct ReferenceSample {
+  vec4 position;   // xyz: world hit position; w: material index, or -1 when the ray escaped
+  vec4 normal;     // xyz: unit world shading normal facing the ray; w: log2 of the texture
+                   //      footprint in uv units (ray cone), before the texture's size is added
+  vec4 direction;  // xyz: unit ray direction (away from the reflecting point); w: 1 when the hit
+                   //      is traceable (visible on screen), else 0
+  vec4 hit_pixel;  // xy: the hit's pixel (GL convention, for the screen-space ideal); zw: uv
+};
+
+struct ReferencePixel {
+  ivec4 data;      // x, y: pixel; z: first sample; w: sample count (0: not reflective)
+};
+
+struct ReferenceMaterial {
+  vec4 albedo_metallic;  // linear albedo, metallic
+  vec4 params;           // roughness, reflectance, albedo texture slot (-1: none), unused
+  vec4 emission;         // linear rgb
+};
+
+SSR_SHARED_END

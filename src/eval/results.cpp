@@ -1,0 +1,273 @@
+// Result records and their writers (DESIGN §6, §7).
+#include "eval/results.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+#include "core/errors.h"
+
+namespace ssr {
+namespace {
+
+// Shortest round-trip text of a double, independent of the C locale.
+std::string number_text(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string fixed_text(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+nlohmann::json error_json(const ErrorMetrics& e) {
+  return nlohmann::json{
+      {"rmse", e.rmse},
+      {"psnr", e.psnr},
+      {"rmse_traceable", e.rmse_traceable},
+      {"psnr_traceable", e.psnr_traceable},
+      {"rmse_missing", e.rmse_missing},
+      {"coverage", e.coverage},
+      {"reflective", e.reflective},
+      {"traceable", e.traceable},
+      {"missing", e.missing},
+      {"sky", e.sky},
+  };
+}
+
+nlohmann::json technique_json(const TechniqueResult& r) {
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [key, value] : r.params) params[key] = param_value_json(value);
+  nlohmann::json passes = nlohmann::json::array();
+  for (const auto& p : r.passes) passes.push_back({{"name", p.name}, {"ms", p.ms}});
+  return nlohmann::json{
+      {"technique", r.technique},
+      {"preset", r.preset},
+      {"params", std::move(params)},
+      {"time_ms", {{"median", r.time_ms.median}, {"min", r.time_ms.min}, {"max", r.time_ms.max}}},
+      {"passes", std::move(passes)},
+      {"floor_ms", r.floor_ms},
+      {"time_over_floor", time_over_floor(r)},
+      {"error", error_json(r.error)},
+      {"nonfinite", r.error.nonfinite},
+  };
+}
+
+nlohmann::json device_json(const DeviceInfo& d) {
+  return nlohmann::json{{"renderer", d.renderer}, {"version", d.version}, {"clock", d.clock}};
+}
+
+// The run without device and revision.
+nlohmann::json run_json(const RunResults& run) {
+  nlohmann::json results = nlohmann::json::array();
+  for (const auto& r : run.results) results.push_back(technique_json(r));
+  return nlohmann::json{
+      {"size", {run.width, run.height}},
+      {"scene", run.scene},
+      {"results", std::move(results)},
+      {"inherent_psnr", run.inherent_psnr},
+  };
+}
+
+// RFC 4180: a field with a comma, quote, CR or LF is quoted, quotes doubled.
+std::string csv_field(std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(s);
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+  return out;
+}
+
+std::string params_text(const TechniqueResult& r) {
+  std::string out;
+  for (const auto& [key, value] : r.params) {
+    if (!out.empty()) out += ';';
+    out += key;
+    out += '=';
+    out += value;
+  }
+  return out;
+}
+
+// The last system error as text; errno may be 0 after a stream failure.
+std::string errno_text(int e) {
+  return e != 0 ? std::string(std::strerror(e)) : std::string("an input/output error occurred");
+}
+
+std::string pad_left(const std::string& s, std::size_t w) {
+  return s.size() >= w ? s : std::string(w - s.size(), ' ') + s;
+}
+std::string pad_right(const std::string& s, std::size_t w) {
+  return s.size() >= w ? s : s + std::string(w - s.size(), ' ');
+}
+
+}  // namespace
+
+TimeStats time_stats(std::vector<double> samples) {
+  TimeStats t;
+  if (samples.empty()) return t;
+  std::sort(samples.begin(), samples.end());
+  const std::size_t n = samples.size();
+  t.min = samples.front();
+  t.max = samples.back();
+  t.median = (n % 2 == 1) ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
+  return t;
+}
+
+double time_over_floor(const TechniqueResult& r) {
+  if (!(r.floor_ms > 0.0)) return 0.0;
+  return r.time_ms.median / r.floor_ms;
+}
+
+nlohmann::json param_value_json(const std::string& text) {
+  if (text == "true") return true;
+  if (text == "false") return false;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (!text.empty()) {
+    long long i = 0;
+    auto ri = std::from_chars(first, last, i);
+    if (ri.ec == std::errc() && ri.ptr == last) return i;
+    double d = 0;
+    auto rd = std::from_chars(first, last, d);
+    if (rd.ec == std::errc() && rd.ptr == last && std::isfinite(d)) return d;
+  }
+  return text;
+}
+
+nlohmann::json to_json(const DeviceInfo& device, const std::string& revision,
+                       const RunResults& run) {
+  nlohmann::json j = run_json(run);
+  j["device"] = device_json(device);
+  j["revision"] = revision;
+  return j;
+}
+
+nlohmann::json bench_json(const DeviceInfo& device, const std::string& revision,
+                          const std::vector<RunResults>& runs) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& run : runs) list.push_back(run_json(run));
+  return nlohmann::json{
+      {"device", device_json(device)}, {"revision", revision}, {"runs", std::move(list)}};
+}
+
+std::string results_csv(const std::vector<RunResults>& runs) {
+  std::string out =
+      "scene,width,height,technique,preset,params,time_median_ms,time_min_ms,time_max_ms,"
+      "floor_ms,time_over_floor,rmse,psnr,rmse_traceable,psnr_traceable,rmse_missing,coverage,"
+      "nonfinite\n";
+  for (const auto& run : runs) {
+    for (const auto& r : run.results) {
+      const std::string fields[] = {
+          csv_field(run.scene),
+          std::to_string(run.width),
+          std::to_string(run.height),
+          csv_field(r.technique),
+          csv_field(r.preset),
+          csv_field(params_text(r)),
+          number_text(r.time_ms.median),
+          number_text(r.time_ms.min),
+          number_text(r.time_ms.max),
+          number_text(r.floor_ms),
+          number_text(time_over_floor(r)),
+          number_text(r.error.rmse),
+          number_text(r.error.psnr),
+          number_text(r.error.rmse_traceable),
+          number_text(r.error.psnr_traceable),
+          number_text(r.error.rmse_missing),
+          number_text(r.error.coverage),
+          std::to_string(r.error.nonfinite),
+      };
+      bool first = true;
+      for (const auto& f : fields) {
+        if (!first) out += ',';
+        out += f;
+        first = false;
+      }
+      out += '\n';
+    }
+  }
+  return out;
+}
+
+std::string results_table(const RunResults& run, const std::string& clock) {
+  const std::vector<std::string> header = {
+      "technique", "ms (" + clock + ")", "floor x", "PSNR dB", "PSNR trace dB", "coverage",
+      "nonfinite"};
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : run.results) {
+    std::string name = r.technique;
+    if (!r.preset.empty()) name += " [" + r.preset + "]";
+    const double tof = time_over_floor(r);
+    rows.push_back({
+        name,
+        fixed_text(r.time_ms.median, 2),
+        tof > 0.0 ? fixed_text(tof, 2) : std::string("-"),
+        fixed_text(r.error.psnr, 2),
+        r.error.traceable > 0 ? fixed_text(r.error.psnr_traceable, 2) : std::string("-"),
+        r.error.traceable > 0 ? fixed_text(r.error.coverage * 100.0, 1) + "%" : std::string("-"),
+        std::to_string(r.error.nonfinite),
+    });
+  }
+  std::vector<std::size_t> width(header.size());
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    width[c] = header[c].size();
+    for (const auto& row : rows) width[c] = std::max(width[c], row[c].size());
+  }
+  auto line = [&](const std::vector<std::string>& cells) {
+    std::string s = pad_right(cells[0], width[0]);
+    for (std::size_t c = 1; c < cells.size(); ++c) s += "  " + pad_left(cells[c], width[c]);
+    return s + "\n";
+  };
+
+  std::string out = run.scene + " " + std::to_string(run.width) + "x" +
+                    std::to_string(run.height) + ", inherent PSNR " +
+                    fixed_text(run.inherent_psnr, 2) + " dB\n";
+  out += line(header);
+  std::size_t total = width[0];
+  for (std::size_t c = 1; c < width.size(); ++c) total += 2 + width[c];
+  out += std::string(total, '-') + "\n";
+  for (const auto& row : rows) out += line(row);
+  return out;
+}
+
+void write_text_file_atomic(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp" + std::to_string(static_cast<long long>(::getpid()));
+  auto fail = [&](const std::string& why) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw RuntimeError("Could not write '" + path.string() + "': " + why + ".");
+  };
+  {
+    errno = 0;
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) fail(errno_text(errno));
+    f.write(text.data(), static_cast<std::streamsize>(text.size()));
+    f.flush();
+    if (!f) fail(errno_text(errno));
+    f.close();
+    if (!f) fail(errno_text(errno));
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) fail(ec.message());
+}
+
+}  // namespace ssr

@@ -1,0 +1,74 @@
+// Result records of `ssrlab compare` and `ssrlab bench`, and their writers (DESIGN §6, §7):
+// results JSON, bench JSON, CSV, and a text table for the terminal.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "eval/metrics.h"
+
+namespace ssr {
+
+struct TimeStats {
+  double median = 0, min = 0, max = 0;
+};
+
+// Median (mean of the two middle values for even counts), min and max; all 0 for no samples.
+TimeStats time_stats(std::vector<double> samples);
+
+struct PassTiming {
+  std::string name;
+  double ms = 0;  // median over the frames
+};
+
+struct DeviceInfo {
+  std::string renderer, version, clock;  // clock: "gpu" or "cpu"
+};
+
+struct TechniqueResult {
+  std::string technique;
+  std::string preset;  // "" when none
+  // key -> value as text, in table order. In JSON, values that parse as numbers become numbers,
+  // true/false become booleans, anything else stays a string.
+  std::vector<std::pair<std::string, std::string>> params;
+  TimeStats time_ms;                // the technique's passes only
+  std::vector<PassTiming> passes;   // every pass of the frame
+  double floor_ms = 0;              // the floor pass (DESIGN §6)
+  ErrorMetrics error;
+};
+
+struct RunResults {  // one scene at one size
+  std::string scene;
+  int width = 0, height = 0;
+  double inherent_psnr = 0;  // ideal vs truth, once per scene
+  std::vector<TechniqueResult> results;
+};
+
+// time_ms.median / floor_ms; 0 when floor_ms is not positive.
+double time_over_floor(const TechniqueResult& r);
+
+// A param value as JSON: integer, floating-point number, boolean, or string.
+nlohmann::json param_value_json(const std::string& text);
+
+// The results JSON of DESIGN §7 (one scene at one size).
+nlohmann::json to_json(const DeviceInfo& device, const std::string& revision,
+                       const RunResults& run);
+
+// {device, revision, runs:[<each run as to_json without device/revision>]}.
+nlohmann::json bench_json(const DeviceInfo& device, const std::string& revision,
+                          const std::vector<RunResults>& runs);
+
+// One header line, then one line per technique result (RFC 4180 quoting, "\n" line ends).
+std::string results_csv(const std::vector<RunResults>& runs);
+
+// A fixed-width text table of one run for the terminal; `clock` labels the time column.
+std::string results_table(const RunResults& run, const std::string& clock);
+
+// Writes `text` to path + ".tmp<pid>", then renames it onto `path`. On failure removes the
+// temporary file and throws RuntimeError (one sentence).
+void write_text_file_atomic(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace ssr

@@ -1,0 +1,267 @@
+#include "reference/reference.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+#include <glm/gtc/matrix_access.hpp>
+
+#include "core/errors.h"
+#include "reference/embree_scene.h"
+#include "render/renderer.h"
+#include "shared/bindings.h"
+#include "shared/reference.h"
+#include "shared/reference_params.h"
+#include "shared/sampling.h"
+
+namespace ssr {
+
+namespace {
+
+using P = shared::ReferenceParams;
+const ParamDesc kTable[] = {
+    SSR_PARAM_INT(P, samples, 1, 4096, "rays", "GGX VNDF samples per rough pixel; mirror pixels trace one ray."),
+    SSR_PARAM_INT(P, seed, 0, 1000000, "", "Random seed of the samples: the same seed gives the same image."),
+    SSR_PARAM_FLOAT(P, mirror_roughness, 0.0, 1.0, 0.001, "",
+                    "Pixels with a perceptual roughness below this trace a single mirror ray."),
+    SSR_PARAM_FLOAT(P, depth_tolerance, 0.0001, 0.5, 0.001, "relative",
+                    "A true hit counts as visible on screen when the depth buffer there is within this relative distance."),
+};
+
+// Samples per GPU batch: bounds the upload to ~256 MiB whatever the size and sample count.
+constexpr std::size_t kMaxBatchSamples = std::size_t(4) << 20;
+
+}  // namespace
+
+class ReferenceTechnique final : public TechniqueWithParams<P> {
+ public:
+  ReferenceTechnique() : TechniqueWithParams("reference", kTable) {}
+
+  void load(const gl::ShaderSource& src) override {
+    program_ = gl::Program::compute(src, "reference/shade.comp");
+  }
+
+  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override;
+
+  ReferenceOutputs outputs() const { return {&ideal_, &classes_, rays_}; }
+
+ private:
+  gl::Program program_;
+  const Scene* bvh_scene_ = nullptr;
+  std::unique_ptr<EmbreeScene> bvh_;
+  gl::Texture2D ideal_;
+  std::vector<PixelClass> classes_;
+  std::size_t rays_ = 0;
+};
+
+std::unique_ptr<Technique> make_reference_technique() { return std::make_unique<ReferenceTechnique>(); }
+
+ReferenceOutputs reference_outputs(const Technique& t) {
+  if (auto* r = dynamic_cast<const ReferenceTechnique*>(&t)) return r->outputs();
+  return {};
+}
+
+void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflection) {
+  gl::ScopedPass pass(in.timer, "reference");
+  const Scene& scene = in.scene;
+  if (!bvh_ || bvh_scene_ != &scene) {
+    bvh_ = std::make_unique<EmbreeScene>(scene);
+    bvh_scene_ = &scene;
+  }
+  const int w = in.width, h = in.height;
+  const std::size_t npx = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+
+  // --- read the G-buffer back (GL convention: row 0 at the bottom) --------------------------
+  std::vector<float> depth(npx), normal_rough(npx * 4);
+  std::vector<std::uint8_t> material(npx * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(in.gbuffer.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    static_cast<GLsizei>(npx * sizeof(float)), depth.data());
+  glGetTextureImage(in.gbuffer.normal_roughness.id(), 0, GL_RGBA, GL_FLOAT,
+                    static_cast<GLsizei>(npx * 4 * sizeof(float)), normal_rough.data());
+  glGetTextureImage(in.gbuffer.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
+                    static_cast<GLsizei>(npx * 4), material.data());
+
+  const CameraMatrices& m = in.renderer.matrices();
+  const glm::dmat4 inv_proj = glm::inverse(glm::dmat4(m.proj));
+  const glm::dmat4 inv_view = glm::inverse(glm::dmat4(m.view));
+  const glm::dmat4 view = glm::dmat4(m.view);
+  const glm::dmat4 view_proj = glm::dmat4(m.proj) * view;
+  const glm::dvec3 eye = glm::dvec3(inv_view[3]);
+  const double proj_a = m.proj[2][2], proj_b = m.proj[3][2];
+  // Ray cone: the angle one pixel subtends, for texture filtering at the hits.
+  const double pixel_angle = 2.0 / (static_cast<double>(m.proj[1][1]) * h);
+
+  auto view_z_at = [&](int x, int y) {  // view-space z of the depth buffer; +inf for background
+    const double d = depth[static_cast<std::size_t>(y) * w + x];
+    return d <= 0.0 ? std::numeric_limits<double>::infinity() : -proj_b / (d + proj_a);
+  };
+
+  // --- per pixel: its samples -------------------------------------------------------------------
+  std::vector<shared::ReferencePixel> pixels;
+  std::vector<int> pixel_start(npx + 1, 0);
+  for (std::size_t i = 0; i < npx; ++i) {
+    const bool reflective = depth[i] > 0.0f && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE);
+    const float rough = std::clamp(normal_rough[i * 4 + 3], 0.0f, 1.0f);
+    const int n = !reflective ? 0 : (rough < params_.mirror_roughness ? 1 : params_.samples);
+    pixel_start[i + 1] = pixel_start[i] + n;
+  }
+  const std::size_t total = static_cast<std::size_t>(pixel_start[npx]);
+  rays_ = total;
+  std::vector<shared::ReferenceSample> samples(total);
+  std::vector<std::uint8_t> cls(npx, static_cast<std::uint8_t>(PixelClass::NotReflective));
+
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<int> next_row{0};
+  auto worker = [&] {
+    for (int y; (y = next_row.fetch_add(1)) < h;) {
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const int n = pixel_start[i + 1] - pixel_start[i];
+        if (n == 0) continue;
+        const glm::dvec4 ndc((x + 0.5) / w * 2 - 1, (y + 0.5) / h * 2 - 1, depth[i], 1.0);
+        glm::dvec4 pv = inv_proj * ndc;
+        pv /= pv.w;
+        const glm::dvec3 p_ws = glm::dvec3(inv_view * pv);
+        glm::dvec3 n_vs(normal_rough[i * 4], normal_rough[i * 4 + 1], normal_rough[i * 4 + 2]);
+        const double nl = glm::length(n_vs);
+        n_vs = nl > 1e-4 ? n_vs / nl : glm::dvec3(0, 0, 1);
+        const glm::vec3 n_ws = glm::normalize(glm::vec3(glm::dmat3(inv_view) * n_vs));
+        const glm::vec3 v_ws = glm::vec3(glm::normalize(eye - p_ws));
+        const float rough = std::clamp(normal_rough[i * 4 + 3], 0.0f, 1.0f);
+        const double cam_dist = glm::length(eye - p_ws);
+        // Offset along the normal by a few ulps of the position's magnitude: no self-hits,
+        // also 1e4 units from the origin.
+        const double mag = std::max({1.0, std::abs(p_ws.x), std::abs(p_ws.y), std::abs(p_ws.z)});
+        const glm::vec3 origin = glm::vec3(p_ws + glm::dvec3(n_ws) * (4e-6 * mag + 1e-5 * cam_dist));
+        int traceable = 0, missing = 0, sky = 0;
+        for (int k = 0; k < n; ++k) {
+          glm::vec3 dir;
+          if (n == 1) {
+            dir = glm::reflect(-v_ws, n_ws);
+          } else {
+            const glm::vec2 xi = shared::sample_xi(static_cast<unsigned>(x), static_cast<unsigned>(y),
+                                                   static_cast<unsigned>(k), static_cast<unsigned>(params_.seed));
+            dir = shared::sample_reflection(n_ws, v_ws, rough, xi);
+            // Directions under the surface carry no light (and would hit the surface itself).
+            if (glm::dot(dir, n_ws) <= 0.0f) dir = glm::reflect(-v_ws, n_ws);
+          }
+          dir = glm::normalize(dir);
+          shared::ReferenceSample& s = samples[static_cast<std::size_t>(pixel_start[i] + k)];
+          s.direction = glm::vec4(dir, 0.0f);
+          const RayHit hit = bvh_->trace(origin, dir);
+          if (!hit.hit) {
+            s.position = glm::vec4(0, 0, 0, -1);
+            ++sky;
+            continue;
+          }
+          const int mat = scene.meshes[static_cast<std::size_t>(hit.mesh)].material;
+          s.position = glm::vec4(hit.position, static_cast<float>(mat));
+          const double width = pixel_angle * (cam_dist + hit.t);
+          const double footprint = width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
+                                   static_cast<double>(hit.uv_density);
+          s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+          // Traceable: the hit projects on screen and the depth buffer there is that surface.
+          const glm::dvec4 clip = view_proj * glm::dvec4(glm::dvec3(hit.position), 1.0);
+          bool visible = false;
+          glm::vec2 hp(0);
+          if (clip.w > 1e-9) {
+            const glm::dvec2 uv = glm::dvec2(clip) / clip.w * 0.5 + 0.5;
+            if (uv.x >= 0 && uv.x < 1 && uv.y >= 0 && uv.y < 1) {
+              const int hx = std::min(static_cast<int>(uv.x * w), w - 1);
+              const int hy = std::min(static_cast<int>(uv.y * h), h - 1);
+              const double z_hit = (view * glm::dvec4(glm::dvec3(hit.position), 1.0)).z;
+              const double z_buf = view_z_at(hx, hy);
+              visible = std::abs(z_buf - z_hit) <= params_.depth_tolerance * std::abs(z_hit) + 1e-4;
+              hp = glm::vec2(hx, hy);
+            }
+          }
+          s.direction.w = visible ? 1.0f : 0.0f;
+          s.hit_pixel = glm::vec4(hp, hit.uv);
+          (visible ? traceable : missing)++;
+        }
+        PixelClass c = PixelClass::Sky;
+        if (2 * traceable > n) c = PixelClass::Traceable;
+        else if (missing >= sky) c = PixelClass::Missing;
+        cls[i] = static_cast<std::uint8_t>(c);
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+
+  // Classes, flipped to row 0 = top like every read-back image.
+  classes_.assign(npx, PixelClass::NotReflective);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      classes_[static_cast<std::size_t>(h - 1 - y) * w + x] =
+          static_cast<PixelClass>(cls[static_cast<std::size_t>(y) * w + x]);
+
+  // --- GPU shading of the hits, in batches ------------------------------------------------------
+  std::vector<shared::ReferenceMaterial> mats;
+  std::vector<int> slot_of_image(scene.images.size(), -1);
+  std::vector<GLuint> slot_textures;
+  for (const Material& mt : scene.materials) {
+    int slot = -1;
+    if (mt.albedo_texture >= 0) {
+      int& s = slot_of_image[static_cast<std::size_t>(mt.albedo_texture)];
+      if (s < 0) {
+        if (slot_textures.size() >= REFERENCE_MAX_TEXTURES)
+          throw RuntimeError("the reference shades at most " + std::to_string(REFERENCE_MAX_TEXTURES) +
+                             " albedo textures; this scene has more.");
+        s = static_cast<int>(slot_textures.size());
+        slot_textures.push_back(in.renderer.gpu_scene().albedo_texture(mt.albedo_texture));
+      }
+      slot = s;
+    }
+    mats.push_back({glm::vec4(mt.albedo, mt.metallic),
+                    glm::vec4(mt.roughness, mt.reflectance, static_cast<float>(slot), 0.0f),
+                    glm::vec4(mt.emission, 0.0f)});
+  }
+  gl::Buffer mat_buf = gl::make_buffer("reference materials",
+                                       static_cast<GLsizeiptr>(mats.size() * sizeof(mats[0])), mats.data(), 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_MATERIALS, mat_buf.id());
+  for (std::size_t s = 0; s < slot_textures.size(); ++s)
+    glBindTextureUnit(TEX_REF_MAP0 + static_cast<GLuint>(s), slot_textures[s]);
+
+  if (ideal_.width() != w || ideal_.height() != h) ideal_ = gl::Texture2D("reference ideal", GL_RGBA16F, w, h);
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(reflection.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glClearTexImage(ideal_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glBindImageTexture(IMG_REF_TRUTH, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(IMG_REF_IDEAL, ideal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glUseProgram(program_.id());
+
+  std::size_t i = 0;
+  while (i < npx) {
+    // Gather whole pixels until the batch holds enough samples.
+    pixels.clear();
+    const std::size_t first_sample = static_cast<std::size_t>(pixel_start[i]);
+    for (; i < npx; ++i) {
+      const int n = pixel_start[i + 1] - pixel_start[i];
+      if (n == 0) continue;
+      if (!pixels.empty() && static_cast<std::size_t>(pixel_start[i + 1]) - first_sample > kMaxBatchSamples) break;
+      pixels.push_back({glm::ivec4(static_cast<int>(i % static_cast<std::size_t>(w)),
+                                   static_cast<int>(i / static_cast<std::size_t>(w)),
+                                   pixel_start[i] - static_cast<int>(first_sample), n)});
+    }
+    if (pixels.empty()) break;
+    const std::size_t end_sample = static_cast<std::size_t>(pixel_start[i]);
+    gl::Buffer sbuf = gl::make_buffer(
+        "reference samples", static_cast<GLsizeiptr>((end_sample - first_sample) * sizeof(shared::ReferenceSample)),
+        samples.data() + first_sample, 0);
+    gl::Buffer pbuf = gl::make_buffer("reference pixels",
+                                      static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
+                                      pixels.data(), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
+    glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
+    glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glFinish();  // the batch's buffers die at the end of this scope
+  }
+}
+
+}  // namespace ssr
