@@ -131,6 +131,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
         const glm::vec3 v_ws = glm::vec3(glm::normalize(eye - p_ws));
         const float rough = std::clamp(normal_rough[i * 4 + 3], 0.0f, 1.0f);
         const double cam_dist = glm::length(eye - p_ws);
+        const double cos_phi = std::abs(pv.z) / std::max(glm::length(glm::dvec3(pv)), 1e-30);
         // Offset along the normal by a few ulps of the position's magnitude: no self-hits,
         // also 1e4 units from the origin.
         const double mag = std::max({1.0, std::abs(p_ws.x), std::abs(p_ws.y), std::abs(p_ws.z)});
@@ -158,7 +159,9 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           }
           const int mat = scene.meshes[static_cast<std::size_t>(hit.mesh)].material;
           s.position = glm::vec4(hit.position, static_cast<float>(mat));
-          const double width = pixel_angle * (cam_dist + hit.t);
+          // GL picks the LOD of the longer footprint axis; off the view axis a pixel subtends
+          // cos(phi) times the central angle along that axis.
+          const double width = pixel_angle * cos_phi * (cam_dist + hit.t);
           const double footprint = width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
                                    static_cast<double>(hit.uv_density);
           s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));

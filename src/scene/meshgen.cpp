@@ -38,17 +38,16 @@ void add_quad(Mesh& m, glm::vec3 origin, glm::vec3 U, glm::vec3 V, glm::vec2 uv_
 
 float sign_or_one(float v) { return v < 0.0f ? -1.0f : 1.0f; }
 
-// Any unit vector orthogonal to unit n.
-glm::vec3 any_orthogonal(glm::vec3 n) {
-  const glm::vec3 a = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
-  return glm::normalize(glm::cross(a, n));
-}
-
 bool finite3(glm::vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 }  // namespace
+
+glm::vec3 any_orthogonal(glm::vec3 n) {
+  const glm::vec3 a = std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  return glm::normalize(glm::cross(a, n));
+}
 
 Mesh plane(glm::vec2 size, float uv_scale) {
   // Seen from above (+Y), u runs along +X and v along -Z (image up = away from a viewer at +Z).

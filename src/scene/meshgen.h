@@ -21,4 +21,7 @@ void transform(Mesh& mesh, const glm::mat4& m);
 // Fills Vertex::tangent from positions, normals and uvs (used for OBJ files without tangents).
 void compute_tangents(Mesh& mesh);
 
+// Any unit vector orthogonal to the unit vector n (a fallback tangent).
+glm::vec3 any_orthogonal(glm::vec3 n);
+
 }  // namespace ssr::meshgen

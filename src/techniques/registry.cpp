@@ -7,6 +7,7 @@ namespace ssr {
 std::unique_ptr<Technique> make_none_technique();
 std::unique_ptr<Technique> make_linear_technique();
 std::unique_ptr<Technique> make_reference_technique();
+std::unique_ptr<Technique> make_planar_technique();
 
 const std::vector<TechniqueInfo>& technique_registry() {
   static const std::vector<TechniqueInfo> registry = {
@@ -15,6 +16,8 @@ const std::vector<TechniqueInfo>& technique_registry() {
        make_linear_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
+      {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",
+       make_planar_technique},
   };
   return registry;
 }

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
@@ -172,6 +174,36 @@ TEST(ObjLoad, AppendWithTransformAndOverride) {
   }
   EXPECT_THROW(ssr::append_obj(s, kObj + "cube.obj", glm::mat4(0.0f)), InputError);
   EXPECT_THROW(ssr::append_obj(s, kObj + "cube.obj", glm::mat4(1.0f), 5), InputError);
+}
+
+TEST(ObjLoad, SizeLimitsAndBinaryFiles) {
+  const std::filesystem::path dir =
+      std::filesystem::path(testing::TempDir()) / "ssrlab_scene_io_limits";
+  std::filesystem::create_directories(dir);
+  // Above 1 GiB: refused from the size alone (a sparse file, nothing is read).
+  const auto huge = dir / "huge.obj";
+  { std::ofstream(huge) << "v 0 0 0\n"; }
+  std::filesystem::resize_file(huge, (1ull << 30) + 1);
+  expect_message(input_error([&] { ssr::load_scene(huge.string()); }),
+                 {"huge.obj", "1073741825 bytes", "1073741824"});
+  std::filesystem::remove(huge);
+  // A face with more vertices than supported.
+  const auto wide = dir / "wide.obj";
+  {
+    std::ofstream o(wide);
+    for (int i = 0; i < 300; ++i)
+      o << "v " << std::cos(i * 0.02) << " " << std::sin(i * 0.02) << " 0\n";
+    o << "f";
+    for (int i = 1; i <= 300; ++i) o << " " << i;
+    o << "\n";
+  }
+  expect_message(input_error([&] { ssr::load_scene(wide.string()); }),
+                 {"wide.obj", "line 301", "300 vertices", "256"});
+  // Binary junk.
+  const auto bin = dir / "binary.obj";
+  { std::ofstream(bin, std::ios::binary) << std::string("v 0 0 0\0\1\2", 10); }
+  expect_message(input_error([&] { ssr::load_scene(bin.string()); }), {"binary.obj", "NUL"});
+  std::filesystem::remove_all(dir);
 }
 
 struct BadFile {

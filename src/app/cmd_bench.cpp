@@ -1,0 +1,245 @@
+// `ssrlab bench`: scenes x techniques x parameter sweeps x sizes. Warm-up, then N frames with
+// every pass timed; the floor pass; the error of every variant against the reference; JSON, CSV
+// and SVG plots (error vs time, time vs resolution, time vs the swept parameter).
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <regex>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "core/revision.h"
+#include "core/variants.h"
+#include "eval/results.h"
+#include "eval/runner.h"
+#include "eval/svg_plot.h"
+#include "scene/scene_io.h"
+
+namespace fs = std::filesystem;
+
+namespace ssr {
+namespace {
+
+struct BenchOptions {
+  std::string scenes = "gallery";
+  std::string techniques;  // default: every technique but reference and planar
+  std::vector<std::string> presets;
+  std::vector<std::string> sets;
+  std::vector<std::string> sweeps;
+  std::string sizes = "1280x720";
+  int frames = 20;
+  int warmup = 5;
+  std::string json, csv, plot;
+  std::string gl = "auto";
+};
+
+// "720p", "1080p", "1440p", "4k", "8k" or WIDTHxHEIGHT.
+std::pair<int, int> parse_named_size(const std::string& s) {
+  static const std::map<std::string, std::pair<int, int>> named = {
+      {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}},
+      {"4k", {3840, 2160}}, {"2160p", {3840, 2160}}, {"8k", {7680, 4320}}, {"4320p", {7680, 4320}}};
+  auto it = named.find(s);
+  return it != named.end() ? it->second : parse_size(s);
+}
+
+void require_dir(const std::string& file) {
+  if (file.empty()) return;
+  const fs::path dir = fs::absolute(file).parent_path();
+  if (!fs::is_directory(dir)) throw InputError("output directory '" + dir.string() + "' does not exist.");
+}
+
+std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
+
+void progress(std::size_t done, std::size_t total, const std::string& what) {
+  if (!isatty(STDOUT_FILENO)) return;
+  const int width = 30;
+  const int filled = total ? static_cast<int>(width * done / total) : width;
+  std::printf("\r[%s%s] %zu/%zu %-50.50s", std::string(static_cast<std::size_t>(filled), '#').c_str(),
+              std::string(static_cast<std::size_t>(width - filled), ' ').c_str(), done, total, what.c_str());
+  if (done == total) std::printf("\n");
+  std::fflush(stdout);
+}
+
+std::string label_of(const TechniqueResult& r, const std::string& swept_key) {
+  if (!r.preset.empty()) return r.technique + " [" + r.preset + "]";
+  if (swept_key.empty()) return r.technique;
+  for (const auto& [k, v] : r.params)
+    if (k == swept_key) return r.technique + " " + k.substr(r.technique.size() + 1) + "=" + v;
+  return r.technique;
+}
+
+void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
+                 const std::vector<Variant>& variants, const std::string& clock) {
+  const fs::path base(o.plot);
+  const std::string stem = (base.parent_path() / base.stem()).string();
+  std::vector<std::string> written;
+  auto write = [&](const std::string& path, const PlotSpec& spec) {
+    write_text_file_atomic(path, svg_plot(spec));
+    written.push_back(path);
+  };
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const RunResults& run = runs[r];
+    const std::string where = run.scene + " " + size_name(run.width, run.height);
+    // Error vs time: one curve per technique across its sweep; presets as labelled points.
+    PlotSpec pareto{"Tracing error vs time, " + where, "time (ms, " + clock + ", log)",
+                    "PSNR traceable (dB, higher is better)", true, false, {}};
+    std::map<std::string, std::size_t> series_of;
+    for (std::size_t i = 0; i < run.results.size(); ++i) {
+      const TechniqueResult& t = run.results[i];
+      const std::string name = t.preset.empty() ? t.technique : "preset " + t.preset;
+      if (!series_of.count(name)) {
+        series_of[name] = pareto.series.size();
+        pareto.series.push_back({name, {}, {}, t.preset.empty()});
+      }
+      PlotSeries& s = pareto.series[series_of[name]];
+      s.points.push_back({t.time_ms.median, t.error.psnr_traceable});
+      s.labels.push_back(t.preset.empty() ? label_of(t, variants[i].swept_key).substr(t.technique.size()) : t.preset);
+    }
+    for (PlotSeries& s : pareto.series) {  // sort each curve by time so lines do not zigzag
+      std::vector<std::size_t> idx(s.points.size());
+      for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+      std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return s.points[a].first < s.points[b].first; });
+      PlotSeries sorted{s.name, {}, {}, s.lines};
+      for (auto k : idx) {
+        sorted.points.push_back(s.points[k]);
+        sorted.labels.push_back(s.labels[k]);
+      }
+      s = sorted;
+    }
+    const std::string suffix = "-" + run.scene + "-" + size_name(run.width, run.height) + ".svg";
+    write(r == 0 ? o.plot : stem + "-pareto" + suffix, pareto);  // the first run: the --plot file
+    // Time vs the swept parameter, per technique with a sweep.
+    PlotSpec sweep{"Time vs swept parameter, " + where, "parameter value", "time (ms, " + clock + ")", false, false, {}};
+    for (std::size_t i = 0; i < run.results.size(); ++i) {
+      if (variants[i].swept_key.empty()) continue;
+      const TechniqueResult& t = run.results[i];
+      const std::string name = variants[i].swept_key;
+      auto it = std::find_if(sweep.series.begin(), sweep.series.end(), [&](const PlotSeries& s) { return s.name == name; });
+      if (it == sweep.series.end()) { sweep.series.push_back({name, {}, {}, true}); it = sweep.series.end() - 1; }
+      for (const auto& [k, v] : t.params)
+        if (k == name) it->points.push_back({std::stod(v), t.time_ms.median});
+    }
+    if (!sweep.series.empty()) write(stem + "-sweep" + suffix, sweep);
+  }
+  // Time vs resolution: per scene, per technique (first variant of each), when several sizes ran.
+  std::map<std::string, PlotSpec> by_scene;
+  for (const RunResults& run : runs) {
+    PlotSpec& spec = by_scene[run.scene];
+    spec.title = "Time vs resolution, " + run.scene;
+    spec.x_label = "megapixels (log)";
+    spec.y_label = "time (ms, " + clock + ", log)";
+    spec.log_x = spec.log_y = true;
+    std::map<std::string, bool> seen;
+    for (const TechniqueResult& t : run.results) {
+      const std::string name = t.preset.empty() ? t.technique : "preset " + t.preset;
+      if (seen[name]) continue;
+      seen[name] = true;
+      auto it = std::find_if(spec.series.begin(), spec.series.end(), [&](const PlotSeries& s) { return s.name == name; });
+      if (it == spec.series.end()) { spec.series.push_back({name, {}, {}, true}); it = spec.series.end() - 1; }
+      it->points.push_back({run.width * double(run.height) / 1e6, t.time_ms.median});
+      it->labels.push_back(size_name(run.width, run.height));
+    }
+  }
+  for (auto& [scene, spec] : by_scene) {
+    bool several = false;
+    for (const PlotSeries& s : spec.series) several |= s.points.size() > 1;
+    if (several) write(stem + "-resolution-" + scene + ".svg", spec);
+  }
+  for (const std::string& p : written) std::printf("plot: %s\n", p.c_str());
+}
+
+int run_bench(const BenchOptions& o) {
+  if (o.json.empty() && o.csv.empty() && o.plot.empty())
+    throw InputError("bench needs at least one of --json, --csv, --plot.");
+  require_dir(o.json);
+  require_dir(o.csv);
+  require_dir(o.plot);
+  if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot must name a .svg file.");
+  if (o.frames < 1 || o.frames > 10000) throw InputError("--frames must be in [1, 10000].");
+  if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
+  std::vector<std::pair<int, int>> sizes;
+  for (const std::string& s : split_list(o.sizes, "size")) sizes.push_back(parse_named_size(s));
+  std::vector<Scene> scenes;
+  for (const std::string& s : split_list(o.scenes, "scene")) scenes.push_back(load_scene(s));
+  std::vector<std::string> names;
+  if (o.techniques.empty()) {
+    for (const TechniqueInfo& t : technique_registry())
+      if (t.name != "reference" && t.name != "planar") names.push_back(t.name);
+  } else {
+    names = split_list(o.techniques, "technique");
+  }
+  const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
+  auto reference = create_technique("reference");
+  apply_assignments(*reference, sets_for("reference", o.sets));
+
+  auto ctx = open_gl(o.gl);
+  const gl::ContextInfo& gi = ctx->info();
+  const std::string clock = gi.software ? "cpu" : "gpu";
+  const TimingOptions timing{o.warmup, o.frames, gi.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
+  std::vector<RunResults> runs;
+  const std::size_t total = scenes.size() * sizes.size() * variants.size();
+  std::size_t done = 0;
+  for (const Scene& scene : scenes) {
+    std::unique_ptr<Renderer> renderer;
+    for (auto [w, h] : sizes) {
+      try {
+        if (!renderer) renderer = std::make_unique<Renderer>(scene, w, h);
+        renderer->resize(w, h);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "ssrlab: skipping %s at %dx%d: %s\n", scene.name.c_str(), w, h, e.what());
+        done += variants.size();
+        continue;
+      }
+      reference->load(renderer->shaders());
+      const Camera& camera = scene.cameras.front();
+      progress(done, total, scene.name + " " + size_name(w, h) + " reference");
+      auto frame = std::make_unique<ScoredFrame>(*renderer, camera, *reference);
+      FloorPass floor(renderer->shaders());
+      const double floor_ms = floor.time(*renderer, timing);
+      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}};
+      for (const Variant& v : variants) {
+        progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
+        EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing, floor_ms);
+        run.results.push_back(ev.result);
+        ++done;
+      }
+      progress(done, total, "");
+      std::printf("%s", results_table(run, clock).c_str());
+      runs.push_back(std::move(run));
+      renderer->resize(1, 1);  // free the big targets before the next size
+    }
+  }
+  const std::string revision = build_revision();
+  if (!o.json.empty()) write_text_file_atomic(o.json, bench_json({gi.renderer, gi.version, clock}, revision, runs).dump(2) + "\n");
+  if (!o.csv.empty()) write_text_file_atomic(o.csv, results_csv(runs));
+  if (!o.plot.empty() && !runs.empty()) write_plots(o, runs, variants, clock);
+  std::printf("device: %s | %s | clock %s | revision %s\n", gi.renderer.c_str(), gi.version.c_str(), clock.c_str(), revision.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* c = app.add_subcommand("bench", "Time and score techniques over scenes, sweeps and sizes.");
+  c->add_option("--scenes", o->scenes, "Comma-separated scenes.")->capture_default_str();
+  c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all screen-space ones).");
+  c->add_option("--preset", o->presets, "Add a named preset as its own variant (repeatable).");
+  c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
+  c->add_option("--sweep", o->sweeps, "technique.key=v1,v2,... (repeatable; sweeps of one technique multiply).");
+  c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or 720p, 1080p, 1440p, 4k, 8k.")->capture_default_str();
+  c->add_option("--frames", o->frames, "Timed frames per variant.")->capture_default_str();
+  c->add_option("--warmup", o->warmup, "Untimed frames before timing.")->capture_default_str();
+  c->add_option("--json", o->json, "Results JSON.");
+  c->add_option("--csv", o->csv, "Results CSV.");
+  c->add_option("--plot", o->plot, "Error-vs-time SVG; sweep and resolution plots go beside it.");
+  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  return {c, [o] { return run_bench(*o); }};
+}
+
+}  // namespace ssr

@@ -1,0 +1,127 @@
+// `ssrlab compare`: every technique and the reference on the same frame; a labelled grid of the
+// images and their difference heat maps, the results JSON, and a table on stdout.
+#include <cstdio>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "core/revision.h"
+#include "core/variants.h"
+#include "eval/grid.h"
+#include "eval/results.h"
+#include "eval/runner.h"
+#include "render/image_io.h"
+#include "scene/scene_io.h"
+
+namespace fs = std::filesystem;
+
+namespace ssr {
+namespace {
+
+struct CompareOptions {
+  std::string scene = "gallery";
+  std::string techniques;  // default: every technique but the reference
+  std::vector<std::string> presets;
+  std::vector<std::string> sets;
+  std::string size = "640x360";
+  std::string camera;
+  std::string out;
+  std::string json;
+  std::string gl = "auto";
+  int frames = 5;
+  float exposure = 0.0f;
+};
+
+void require_dir(const std::string& file) {
+  const fs::path dir = fs::absolute(file).parent_path();
+  if (!fs::is_directory(dir)) throw InputError("output directory '" + dir.string() + "' does not exist.");
+}
+
+char fmt_buf[128];
+const char* fmt(const char* f, double v) {
+  std::snprintf(fmt_buf, sizeof fmt_buf, f, v);
+  return fmt_buf;
+}
+
+int run_compare(const CompareOptions& o) {
+  const auto [w, h] = parse_size(o.size);
+  if (image_format_for(o.out) != ImageFormat::Png) throw InputError("the grid is written as a .png.");
+  require_dir(o.out);
+  if (!o.json.empty()) require_dir(o.json);
+  if (o.frames < 1 || o.frames > 1000) throw InputError("--frames must be in [1, 1000].");
+  Scene scene = load_scene(o.scene);
+  const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
+  std::vector<std::string> names;
+  if (o.techniques.empty()) {
+    for (const TechniqueInfo& t : technique_registry())
+      if (t.name != "reference") names.push_back(t.name);
+  } else {
+    names = split_list(o.techniques, "technique");
+  }
+  const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
+  auto reference = create_technique("reference");
+  apply_assignments(*reference, sets_for("reference", o.sets));
+
+  auto ctx = open_gl(o.gl);
+  const std::string clock = ctx->info().software ? "cpu" : "gpu";
+  Renderer renderer(scene, w, h);
+  renderer.settings.exposure = o.exposure;
+  reference->load(renderer.shaders());
+  TimingOptions timing{1, o.frames, ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
+
+  ScoredFrame frame(renderer, camera, *reference);
+  FloorPass floor(renderer.shaders());
+  const double floor_ms = floor.time(renderer, timing);
+
+  RunResults run;
+  run.scene = scene.name;
+  run.width = w;
+  run.height = h;
+  run.inherent_psnr = frame.inherent_psnr();
+  std::vector<GridTile> top = {{"reference (truth)", to_rgba8(frame.truth())}};
+  std::vector<GridTile> bottom = {{"classes: traceable/missing/sky", class_map(frame.classes(), w, h)}};
+  for (const Variant& v : variants) {
+    EvaluatedVariant ev = evaluate_variant(renderer, frame, camera, v, timing, floor_ms);
+    const ErrorMetrics& e = ev.result.error;
+    std::string label = v.label() + "  " + fmt("%.2f ms ", ev.result.time_ms.median) + clock;
+    top.push_back({label, to_rgba8(ev.score.display)});
+    bottom.push_back({std::string("diff vs truth, PSNR ") + fmt("%.1f dB", e.psnr), heat_map(ev.score.display, frame.truth(), frame.classes())});
+    run.results.push_back(ev.result);
+  }
+  std::vector<GridTile> tiles = top;
+  tiles.insert(tiles.end(), bottom.begin(), bottom.end());
+  write_png(o.out, make_grid(tiles, static_cast<int>(top.size())));
+  const gl::ContextInfo& gi = ctx->info();
+  if (!o.json.empty())
+    write_text_file_atomic(o.json, to_json({gi.renderer, gi.version, clock}, build_revision(), run).dump(2) + "\n");
+  std::printf("%s", results_table(run, clock).c_str());
+  std::printf("reference: %zu rays; grid %s%s%s\n", frame.reference_rays(), o.out.c_str(),
+              o.json.empty() ? "" : ", results ", o.json.c_str());
+  for (const TechniqueResult& r : run.results)
+    if (r.error.nonfinite) return 1;
+  return 0;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* c = app.add_subcommand("compare", "Run techniques and the reference on one frame; grid, JSON, table.");
+  c->add_option("--scene", o->scene, "Built-in scene name or a .json/.obj path.")->capture_default_str();
+  c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all but the reference).");
+  c->add_option("--preset", o->presets, "Add a named preset as its own column (repeatable).");
+  c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
+  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
+  c->add_option("--out", o->out, "The labelled grid (.png).")->required();
+  c->add_option("--json", o->json, "Results JSON (DESIGN §7).");
+  c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  return {c, [o] { return run_compare(*o); }};
+}
+
+}  // namespace ssr

@@ -1,0 +1,143 @@
+// `ssrlab render`: one frame of a scene with one technique, written as PNG or EXR.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "eval/grid.h"
+#include "reference/reference.h"
+#include "render/image_io.h"
+#include "render/renderer.h"
+#include "scene/scene_io.h"
+#include "techniques/presets.h"
+#include "techniques/technique.h"
+
+namespace fs = std::filesystem;
+
+namespace ssr {
+
+std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path) {
+  auto ctx = gl::HeadlessContext::create(gl::parse_backend(path));
+  const auto& i = ctx->info();
+  std::fprintf(stderr, "ssrlab: GL via %s: %s | %s\n", i.path.c_str(), i.renderer.c_str(),
+               i.version.c_str());
+  return ctx;
+}
+
+namespace {
+
+struct RenderOptions {
+  std::string scene = "gallery";
+  std::string technique = "linear";
+  std::string preset;
+  std::vector<std::string> sets;
+  std::string size = "1280x720";
+  std::string camera;
+  std::string out;
+  std::string view = "final";
+  std::string gl = "auto";
+  std::string shader_dir;
+  float exposure = 0.0f;
+};
+
+std::size_t count_nonfinite_values(const std::vector<float>& v) {
+  std::size_t n = 0;
+  for (float x : v) n += !std::isfinite(x);
+  return n;
+}
+
+int run_render(const RenderOptions& o) {
+  // Validate every input before any GL work or file is touched.
+  const auto [w, h] = parse_size(o.size);
+  const ImageFormat format = image_format_for(o.out);
+  const fs::path out_dir = fs::absolute(o.out).parent_path();
+  if (!fs::is_directory(out_dir))
+    throw InputError("output directory '" + out_dir.string() + "' does not exist.");
+  // "classes" is the reference's own view: traceable / missing / sky per pixel.
+  const bool classes_view = o.view == "classes";
+  if (classes_view && o.technique != "reference")
+    throw InputError("--view classes needs --technique reference.");
+  const ViewMode view = classes_view ? ViewMode::Final : parse_view_mode(o.view);
+  Scene scene = load_scene(o.scene);
+  const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
+  std::string technique_name = o.technique;
+  std::vector<std::string> sets = o.sets;
+  if (!o.preset.empty()) {
+    const Preset& p = find_preset(o.preset);
+    technique_name = p.technique;
+    sets.insert(sets.begin(), p.assignments.begin(), p.assignments.end());
+  }
+  auto technique = create_technique(technique_name);
+  apply_assignments(*technique, sets);
+  if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20)
+    throw InputError("exposure must be in [-20, 20] stops.");
+  if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
+    throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
+
+  auto ctx = open_gl(o.gl);
+  gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
+  Renderer renderer(scene, w, h, shaders);
+  renderer.settings.exposure = o.exposure;
+  technique->load(renderer.shaders());
+
+  gl::PassTimer timer(ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu);
+  timer.begin_frame();
+  renderer.render(camera, *technique, view, &timer);
+  timer.end_frame();
+  timer.flush();
+
+  const std::size_t bad = count_nonfinite_values(renderer.read_texture(renderer.reflection()).pixels) +
+                          count_nonfinite_values(renderer.read_texture(renderer.color()).pixels);
+  if (classes_view) {
+    if (format != ImageFormat::Png) throw InputError("--view classes writes a .png.");
+    write_png(o.out, class_map(*reference_outputs(*technique).classes, w, h));
+  } else if (format == ImageFormat::Png) {
+    write_png(o.out, renderer.read_display());
+  } else {
+    write_exr(o.out, renderer.read_linear());
+  }
+
+  double total = 0;
+  std::string passes;
+  for (const auto& p : timer.completed().back()) {
+    total += p.ms;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " %s %.2f", p.name.c_str(), p.ms);
+    passes += buf;
+  }
+  std::printf("wrote %s (%dx%d, scene %s, technique %s, view %s); %s ms %.2f:%s\n",
+              o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), o.view.c_str(),
+              timer.clock_name(), total, passes.c_str());
+  if (bad) {
+    std::fprintf(stderr, "ssrlab: %zu non-finite values in the reflection/colour targets.\n", bad);
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* c = app.add_subcommand("render", "Render one frame of a scene with a technique.");
+  c->add_option("--scene", o->scene, "Built-in scene name or a .json/.obj path.")->capture_default_str();
+  c->add_option("--technique", o->technique, "Technique name (see `ssrlab techniques`).")->capture_default_str();
+  c->add_option("--preset", o->preset, "A named parameter set (sets the technique too), e.g. thesis-hq.");
+  c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable).");
+  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
+  c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
+  std::string views;
+  for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
+  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only).")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");
+  return {c, [o] { return run_render(*o); }};
+}
+
+}  // namespace ssr

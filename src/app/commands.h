@@ -1,0 +1,27 @@
+// The subcommands of `ssrlab` (DESIGN §7). Each validates all input before touching the GL and
+// throws InputError (exit 2) or RuntimeError (exit 1).
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+
+namespace CLI { class App; }
+
+namespace ssr {
+
+// Opens the headless context and logs the path taken and GL_RENDERER on stderr.
+std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path);
+
+// Registers the subcommand on `app`; the returned function runs it after parsing.
+struct Command {
+  CLI::App* sub;
+  std::function<int()> run;
+};
+Command add_render_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
+Command add_bench_command(CLI::App& app);
+
+}  // namespace ssr

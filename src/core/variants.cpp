@@ -1,0 +1,100 @@
+#include "core/variants.h"
+
+#include <set>
+
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "techniques/presets.h"
+#include "techniques/technique.h"
+
+namespace ssr {
+
+std::string Variant::label() const {
+  if (!preset.empty()) return technique + " [" + preset + "]";
+  if (swept_key.empty()) return technique;
+  for (auto it = assignments.rbegin(); it != assignments.rend(); ++it)
+    if (it->rfind(swept_key + "=", 0) == 0) return technique + " " + it->substr(technique.size() + 1);
+  return technique;
+}
+
+std::vector<std::string> split_list(const std::string& text, const std::string& what) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item.empty()) throw InputError(what + " list '" + text + "' has an empty item.");
+    out.push_back(item);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+namespace {
+std::string technique_of(const std::string& key) {
+  const auto dot = key.find('.');
+  if (dot == std::string::npos || dot == 0)
+    throw InputError("parameter key '" + key + "' must be of the form <technique>.<name>.");
+  return key.substr(0, dot);
+}
+}  // namespace
+
+std::vector<std::string> sets_for(const std::string& technique, const std::vector<std::string>& sets) {
+  std::vector<std::string> out;
+  for (const std::string& s : sets)
+    if (technique_of(split_assignment(s).first) == technique) out.push_back(s);
+  return out;
+}
+
+std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
+                                    const std::vector<std::string>& sets,
+                                    const std::vector<std::string>& sweeps,
+                                    const std::vector<std::string>& preset_names) {
+  std::set<std::string> running(techniques.begin(), techniques.end());
+  for (const std::string& t : techniques) create_technique(t);  // unknown names throw
+  auto check_owner = [&](const std::string& key) {
+    const std::string t = technique_of(key);
+    if (t != "reference" && !running.count(t))
+      throw InputError("parameter '" + key + "' belongs to technique '" + t + "', which is not being run.");
+  };
+  for (const std::string& s : sets) check_owner(split_assignment(s).first);
+
+  // key -> values, per technique, in command-line order.
+  std::map<std::string, std::vector<std::pair<std::string, std::vector<std::string>>>> sweep_of;
+  for (const std::string& s : sweeps) {
+    auto [key, values] = split_assignment(s);
+    check_owner(key);
+    if (technique_of(key) == "reference") throw InputError("the reference cannot be swept.");
+    sweep_of[technique_of(key)].push_back({key, split_list(values, "sweep")});
+  }
+
+  std::vector<Variant> out;
+  for (const std::string& t : techniques) {
+    std::vector<Variant> vs = {{t, "", sets_for(t, sets), ""}};
+    for (const auto& [key, values] : sweep_of[t]) {
+      std::vector<Variant> next;
+      for (const Variant& v : vs)
+        for (const std::string& value : values) {
+          Variant n = v;
+          n.assignments.push_back(key + "=" + value);
+          n.swept_key = key;
+          next.push_back(n);
+        }
+      vs = next;
+    }
+    out.insert(out.end(), vs.begin(), vs.end());
+  }
+  for (const std::string& name : preset_names) {
+    const Preset& p = find_preset(name);
+    out.push_back({p.technique, p.name, p.assignments, ""});
+  }
+  // Validate every assignment now, before any GL work.
+  for (const Variant& v : out) {
+    auto t = create_technique(v.technique);
+    apply_assignments(*t, v.assignments);
+  }
+  return out;
+}
+
+}  // namespace ssr

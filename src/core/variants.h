@@ -1,0 +1,33 @@
+// What `compare` and `bench` run: techniques x parameter sweeps, plus named presets.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ssr {
+
+struct Variant {
+  std::string technique;
+  std::string preset;                    // "" unless it comes from --preset
+  std::vector<std::string> assignments;  // "technique.key=value", applied in order
+  std::string swept_key;                 // the key a sweep varied ("" if none)
+  std::string label() const;             // "linear", "linear max_steps=64", "linear [thesis-hq]"
+};
+
+// Builds and validates the variants (InputError on any unknown technique, key or value):
+//  - each technique once with the --set values that name it, times every --sweep on it
+//    (several sweeps of one technique: their cartesian product);
+//  - each preset as its own variant;
+//  - --set / --sweep keys of a technique that is not run are an error, except `reference.*`.
+std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
+                                    const std::vector<std::string>& sets,
+                                    const std::vector<std::string>& sweeps,
+                                    const std::vector<std::string>& preset_names);
+
+// The --set values that name `technique` (for the reference, say).
+std::vector<std::string> sets_for(const std::string& technique, const std::vector<std::string>& sets);
+
+// "a,b,c" -> {a, b, c}; empty items are an error.
+std::vector<std::string> split_list(const std::string& text, const std::string& what);
+
+}  // namespace ssr

@@ -1,0 +1,118 @@
+#include "eval/grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <stb_easy_font.h>
+
+namespace ssr {
+
+namespace {
+std::uint8_t to8(float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+// A compact perceptual ramp (black -> purple -> orange -> yellow), like "inferno".
+void ramp(float t, std::uint8_t* out) {
+  static const float stops[5][3] = {{0.0f, 0.0f, 0.02f}, {0.34f, 0.06f, 0.43f}, {0.73f, 0.21f, 0.33f},
+                                    {0.98f, 0.55f, 0.04f}, {0.99f, 1.0f, 0.64f}};
+  t = std::clamp(t, 0.0f, 1.0f) * 4.0f;
+  const int i = std::min(static_cast<int>(t), 3);
+  const float f = t - static_cast<float>(i);
+  for (int c = 0; c < 3; ++c) out[c] = to8(stops[i][c] + (stops[i + 1][c] - stops[i][c]) * f);
+  out[3] = 255;
+}
+}  // namespace
+
+RgbaImage8 to_rgba8(const RgbaImageF& d) {
+  RgbaImage8 out{d.width, d.height, std::vector<std::uint8_t>(d.pixels.size())};
+  for (std::size_t i = 0; i < d.pixels.size(); ++i)
+    out.pixels[i] = (i % 4 == 3) ? 255 : to8(std::isfinite(d.pixels[i]) ? d.pixels[i] : 1.0f);
+  return out;
+}
+
+RgbaImage8 heat_map(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
+                    float full_scale) {
+  if (a.width != b.width || a.height != b.height || cls.size() != static_cast<std::size_t>(a.width) * a.height)
+    throw std::invalid_argument("heat_map: sizes differ");
+  RgbaImage8 out{a.width, a.height, std::vector<std::uint8_t>(a.pixels.size())};
+  for (std::size_t p = 0; p < cls.size(); ++p) {
+    std::uint8_t* o = &out.pixels[p * 4];
+    if (cls[p] == PixelClass::NotReflective) {
+      o[0] = o[1] = o[2] = 24;
+      o[3] = 255;
+      continue;
+    }
+    float d = 0;
+    for (int c = 0; c < 3; ++c) {
+      const float x = std::abs(a.pixels[p * 4 + static_cast<std::size_t>(c)] - b.pixels[p * 4 + static_cast<std::size_t>(c)]);
+      d += std::isfinite(x) ? x : 1.0f;
+    }
+    ramp(d / 3.0f / full_scale, o);
+  }
+  return out;
+}
+
+RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height) {
+  RgbaImage8 out{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
+  for (std::size_t p = 0; p < cls.size() && p * 4 < out.pixels.size(); ++p) {
+    static const std::uint8_t colors[4][3] = {{0, 0, 0}, {40, 190, 80}, {220, 50, 40}, {60, 110, 230}};
+    const auto c = static_cast<std::size_t>(cls[p]);
+    for (int k = 0; k < 3; ++k) out.pixels[p * 4 + static_cast<std::size_t>(k)] = colors[c][k];
+    out.pixels[p * 4 + 3] = 255;
+  }
+  return out;
+}
+
+namespace {
+// Draws text with stb_easy_font (quads) scaled by `scale`, into an RGBA8 image.
+void draw_text(RgbaImage8& im, int x0, int y0, const std::string& text, int scale) {
+  static char buffer[99999];
+  std::vector<char> str(text.begin(), text.end());
+  str.push_back('\0');
+  const int quads = stb_easy_font_print(0, 0, str.data(), nullptr, buffer, sizeof buffer);
+  const float* v = reinterpret_cast<const float*>(buffer);
+  for (int q = 0; q < quads; ++q) {
+    // 4 vertices of 16 bytes (x, y, z, colour) per quad.
+    const float* a = v + q * 16;
+    const int qx0 = static_cast<int>(a[0]), qy0 = static_cast<int>(a[1]);
+    const int qx1 = static_cast<int>(a[8]), qy1 = static_cast<int>(a[9]);
+    for (int y = qy0 * scale; y < qy1 * scale; ++y)
+      for (int x = qx0 * scale; x < qx1 * scale; ++x) {
+        const int px = x0 + x, py = y0 + y;
+        if (px < 0 || py < 0 || px >= im.width || py >= im.height) continue;
+        std::uint8_t* o = &im.pixels[(static_cast<std::size_t>(py) * im.width + px) * 4];
+        o[0] = o[1] = o[2] = 255;
+        o[3] = 255;
+      }
+  }
+}
+}  // namespace
+
+RgbaImage8 make_grid(const std::vector<GridTile>& tiles, int columns) {
+  if (tiles.empty()) return {};
+  const int tw = tiles[0].image.width, th = tiles[0].image.height;
+  const int scale = tw >= 480 ? 2 : 1;
+  const int strip = 12 * scale + 4, gap = 4;
+  const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
+  RgbaImage8 out{columns * tw + (columns - 1) * gap, rows * (th + strip) + (rows - 1) * gap, {}};
+  out.pixels.assign(static_cast<std::size_t>(out.width) * out.height * 4, 40);
+  for (std::size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 255;
+  for (std::size_t t = 0; t < tiles.size(); ++t) {
+    const RgbaImage8& im = tiles[t].image;
+    if (im.width != tw || im.height != th) throw std::invalid_argument("make_grid: tiles differ in size");
+    const int ox = static_cast<int>(t % static_cast<std::size_t>(columns)) * (tw + gap);
+    const int oy = static_cast<int>(t / static_cast<std::size_t>(columns)) * (th + strip + gap);
+    for (int y = 0; y < strip; ++y)
+      for (int x = 0; x < tw; ++x) {
+        std::uint8_t* o = &out.pixels[(static_cast<std::size_t>(oy + y) * out.width + ox + x) * 4];
+        o[0] = o[1] = o[2] = 16;
+      }
+    draw_text(out, ox + 3, oy + 2, tiles[t].label, scale);
+    for (int y = 0; y < th; ++y)
+      std::copy_n(&im.pixels[static_cast<std::size_t>(y) * tw * 4], static_cast<std::size_t>(tw) * 4,
+                  &out.pixels[(static_cast<std::size_t>(oy + strip + y) * out.width + ox) * 4]);
+  }
+  return out;
+}
+
+}  // namespace ssr

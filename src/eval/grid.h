@@ -1,0 +1,29 @@
+// Images for people: labelled comparison grids and difference heat maps.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "eval/metrics.h"
+
+namespace ssr {
+
+// 8-bit sRGB from display values in [0,1].
+RgbaImage8 to_rgba8(const RgbaImageF& display);
+
+// |a - b| (mean over RGB of display values) on reflective pixels, scaled so that `full_scale`
+// is the hottest colour; non-reflective pixels are dark grey.
+RgbaImage8 heat_map(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
+                    float full_scale = 0.25f);
+
+// The ground truth's classes: traceable green, missing red, sky blue, not reflective black.
+RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height);
+
+struct GridTile {
+  std::string label;
+  RgbaImage8 image;
+};
+// Tiles of equal size, row-major, `columns` per row, each with its label drawn on a dark strip.
+RgbaImage8 make_grid(const std::vector<GridTile>& tiles, int columns);
+
+}  // namespace ssr

@@ -1,0 +1,518 @@
+// JSON scene files: load_scene_json.
+//
+// ---- schema ---------------------------------------------------------------------------------
+// One object; every key below is optional unless marked (required). Unknown keys are an error,
+// wrong types are an error, duplicate keys are an error; // and /* */ comments are allowed.
+// Vectors are arrays of 3 numbers. Paths are relative to the JSON file's directory and must
+// stay inside it (no absolute paths, no "..", no symlink leading out). Units as in scene.h.
+//
+//   "name": "pedestal",                    scene name (default: the file name without .json)
+//   "description": "...",                  free text, ignored
+//   "ambient": 0.3,                        >= 0, scales the environment's diffuse light
+//   "environment": {"type": "sky", "zenith": v3, "horizon": v3, "ground": v3, "intensity": 1}
+//               or {"type": "constant", "color": v3, "intensity": 1}
+//   "materials": {"<name>": {"albedo": v3 in [0,1], "metallic": [0,1], "roughness": [0,1],
+//                 "reflectance": [0,1], "emission": v3 >= 0, "albedo_texture": "x.png",
+//                 "normal_texture": "n.png", "normal_strength": [0,4], "transparent": bool,
+//                 "ior": [1,3]}, ...}
+//       The material named "default" (grey, created if not given) is used by OBJ faces without
+//       a material and by primitives without "material".
+//   "meshes": [{"obj": "meshes/x.obj" (required), "material": "<name>" (replaces the MTL's),
+//               "translate": v3, "rotate_deg": v3, "scale": s > 0 or v3 > 0,
+//               "reflector": {"center": v3, "tangent": v3, "bitangent": v3,
+//                             "half_extents": [hx, hy] > 0}}, ...]
+//   "primitives": [{"type": "plane" | "box" | "sphere" | "cylinder" (required), "name": "...",
+//                   plane: "size": [x, z], "uv_scale": s;  box: "extents": v3;
+//                   sphere: "radius", "segments", "rings";  cylinder: "radius", "height",
+//                   "segments"; "material", "translate", "rotate_deg", "scale",
+//                   "reflector": true (planes: the plane's own rectangle) or an object as above
+//                  }, ...]
+//   "lights": [{"type": "point", "position": v3 (required), "color": v3, "intensity", "range"}
+//           or {"type": "directional", "direction": v3 (required), "color": v3, "intensity"}]
+//   "cameras": [{"name", "position", "target", "up", "fov_y" (degrees), "near", "far"}, ...]
+//       The first camera is the default; without "cameras" one camera frames the whole scene.
+//
+// Transforms are M = T * Rz * Ry * Rx * S (scale first, then rotate about X, Y, Z, then
+// translate). Explicit reflector rectangles are in world space (not moved by the transform);
+// the normal is cross(bitangent, tangent).
+#include <algorithm>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "scene/meshgen.h"
+#include "scene/scene_io.h"
+#include "scene/scene_io_internal.h"
+
+namespace ssr {
+
+using namespace scene_io_detail;
+
+namespace {
+
+using json = nlohmann::json;
+
+constexpr std::uintmax_t kMaxJsonBytes = 16ull << 20;  // 16 MiB
+
+// Reading one JSON scene file: typed getters that name the file and the key on every error.
+class JsonReader {
+ public:
+  explicit JsonReader(fs::path file) : file_(std::move(file)) {}
+  const fs::path& file() const { return file_; }
+
+  [[noreturn]] void fail_at(const std::string& where, const std::string& what) const {
+    fail("scene file " + q(file_) + ": " + q(where) + " " + what);
+  }
+
+  static std::string join(const std::string& parent, const std::string& key) {
+    return parent.empty() ? key : parent + "." + key;
+  }
+  static std::string index(const std::string& parent, std::size_t i) {
+    return parent + "[" + std::to_string(i) + "]";
+  }
+
+  const json& object(const json& j, const std::string& where) const {
+    if (!j.is_object()) fail_at(where, "must be an object");
+    return j;
+  }
+  const json& array(const json& j, const std::string& where) const {
+    if (!j.is_array()) fail_at(where, "must be an array");
+    return j;
+  }
+
+  // Every key of `obj` must be in `allowed`; `for_what` (e.g. " for a box") ends the key's name
+  // in the message.
+  void keys(const json& obj, const std::string& where, const std::vector<std::string_view>& allowed,
+            const std::string& for_what = "") const {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+      if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
+      std::string list;
+      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+      fail("scene file " + q(file_) + ": unknown key " + q(join(where, it.key())) + for_what +
+           " (allowed here: " + list + ")");
+    }
+  }
+
+  float number(const json& j, const std::string& where, float lo, float hi) const {
+    if (!j.is_number()) fail_at(where, "must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v) || std::abs(v) > 3.0e38) fail_at(where, "must be a finite number");
+    if (v < lo || v > hi)
+      fail_at(where, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], not " + fmt(v));
+    return static_cast<float>(v);
+  }
+  float number(const json& obj, const std::string& parent, const char* key, float def, float lo,
+               float hi) const {
+    return obj.contains(key) ? number(obj[key], join(parent, key), lo, hi) : def;
+  }
+  int integer(const json& obj, const std::string& parent, const char* key, int def, int lo,
+              int hi) const {
+    if (!obj.contains(key)) return def;
+    const std::string where = join(parent, key);
+    if (!obj[key].is_number_integer()) fail_at(where, "must be an integer");
+    const auto v = obj[key].get<long long>();
+    if (v < lo || v > hi)
+      fail_at(where, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<int>(v);
+  }
+  glm::vec3 vec3(const json& j, const std::string& where, float lo = -1e7f, float hi = 1e7f) const {
+    if (!j.is_array() || j.size() != 3) fail_at(where, "must be an array of 3 numbers");
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) {
+      if (!j[static_cast<std::size_t>(i)].is_number())
+        fail_at(where, "must be an array of 3 numbers");
+      v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
+    }
+    return v;
+  }
+  glm::vec3 vec3(const json& obj, const std::string& parent, const char* key, glm::vec3 def,
+                 float lo = -1e7f, float hi = 1e7f) const {
+    return obj.contains(key) ? vec3(obj[key], join(parent, key), lo, hi) : def;
+  }
+  glm::vec3 required_vec3(const json& obj, const std::string& parent, const char* key) const {
+    if (!obj.contains(key)) fail_at(join(parent, key), "is required");
+    return vec3(obj[key], join(parent, key));
+  }
+  glm::vec2 vec2(const json& j, const std::string& where, float lo, float hi) const {
+    if (!j.is_array() || j.size() != 2) fail_at(where, "must be an array of 2 numbers");
+    glm::vec2 v;
+    for (int i = 0; i < 2; ++i) {
+      if (!j[static_cast<std::size_t>(i)].is_number())
+        fail_at(where, "must be an array of 2 numbers");
+      v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
+    }
+    return v;
+  }
+  std::string string(const json& j, const std::string& where) const {
+    if (!j.is_string()) fail_at(where, "must be a string");
+    std::string s = j.get<std::string>();
+    if (s.empty()) fail_at(where, "must not be empty");
+    return s;
+  }
+  std::string string(const json& obj, const std::string& parent, const char* key,
+                     const std::string& def) const {
+    return obj.contains(key) ? string(obj[key], join(parent, key)) : def;
+  }
+  bool boolean(const json& obj, const std::string& parent, const char* key, bool def) const {
+    if (!obj.contains(key)) return def;
+    if (!obj[key].is_boolean()) fail_at(join(parent, key), "must be true or false");
+    return obj[key].get<bool>();
+  }
+  // A unit vector from a non-zero one.
+  glm::vec3 direction(const json& j, const std::string& where) const {
+    const glm::vec3 v = vec3(j, where);
+    const float len = glm::length(v);
+    if (!(len > 1e-6f) || !std::isfinite(len)) fail_at(where, "must be a non-zero vector");
+    return v / len;
+  }
+
+  static std::string fmt(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+  }
+
+ private:
+  fs::path file_;
+};
+
+json parse_json_file(const fs::path& path) {
+  const std::string text = read_file(path, kMaxJsonBytes, "scene file");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    fail("scene file " + q(path) + " is empty");
+  // Duplicate keys are an error (nlohmann keeps the last one silently).
+  std::vector<std::set<std::string>> seen;
+  std::string duplicate;
+  auto callback = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) {
+      seen.emplace_back();
+    } else if (event == json::parse_event_t::object_end) {
+      if (!seen.empty()) seen.pop_back();
+    } else if (event == json::parse_event_t::key && !seen.empty()) {
+      const std::string k = parsed.get<std::string>();
+      if (!seen.back().insert(k).second && duplicate.empty()) duplicate = k;
+    }
+    return true;
+  };
+  json j;
+  try {
+    j = json::parse(text, callback, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    const std::string what = e.what();
+    static const std::regex re(R"(at line (\d+), column (\d+): (.*)$)");
+    std::smatch m;
+    if (std::regex_search(what, m, re))
+      fail("scene file " + q(path) + " has a JSON syntax error at line " + m[1].str() +
+           ", column " + (m[2].str() == "0" ? std::string("1") : m[2].str()) + ": " + m[3].str());
+    fail("scene file " + q(path) + " has a JSON syntax error near byte " + std::to_string(e.byte));
+  }
+  if (!duplicate.empty()) fail("scene file " + q(path) + " has the key " + q(duplicate) + " twice");
+  if (!j.is_object()) fail("scene file " + q(path) + " must hold a JSON object");
+  return j;
+}
+
+glm::mat4 read_transform(const JsonReader& r, const json& obj, const std::string& where) {
+  const glm::vec3 t = r.vec3(obj, where, "translate", glm::vec3(0.0f));
+  const glm::vec3 rot = r.vec3(obj, where, "rotate_deg", glm::vec3(0.0f), -36000.0f, 36000.0f);
+  glm::vec3 s(1.0f);
+  if (obj.contains("scale")) {
+    const std::string w = JsonReader::join(where, "scale");
+    if (obj["scale"].is_number())
+      s = glm::vec3(r.number(obj["scale"], w, 1e-6f, 1e6f));
+    else if (obj["scale"].is_array())
+      s = r.vec3(obj["scale"], w, 1e-6f, 1e6f);
+    else
+      r.fail_at(w, "must be a number or an array of 3 numbers");
+  }
+  glm::mat4 m = glm::translate(glm::mat4(1.0f), t);
+  m = glm::rotate(m, glm::radians(rot.z), glm::vec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(rot.y), glm::vec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(rot.x), glm::vec3(1, 0, 0));
+  return glm::scale(m, s);
+}
+
+Reflector read_reflector(const JsonReader& r, const json& j, const std::string& where) {
+  r.object(j, where);
+  r.keys(j, where, {"center", "tangent", "bitangent", "half_extents"});
+  Reflector refl;
+  refl.center = r.required_vec3(j, where, "center");
+  for (const char* k : {"tangent", "bitangent"})
+    if (!j.contains(k)) r.fail_at(JsonReader::join(where, k), "is required");
+  refl.tangent = r.direction(j["tangent"], JsonReader::join(where, "tangent"));
+  refl.bitangent = r.direction(j["bitangent"], JsonReader::join(where, "bitangent"));
+  if (std::abs(glm::dot(refl.tangent, refl.bitangent)) > 1e-3f)
+    r.fail_at(where, "needs orthogonal tangent and bitangent");
+  const std::string he = JsonReader::join(where, "half_extents");
+  if (!j.contains("half_extents")) r.fail_at(he, "is required");
+  refl.half_extents = r.vec2(j["half_extents"], he, 0.0f, 1e7f);
+  if (!(refl.half_extents.x > 0.0f) || !(refl.half_extents.y > 0.0f))
+    r.fail_at(he, "must be positive (zero-area reflectors are not allowed)");
+  return refl;
+}
+
+// Adds `refl`, returning its 1-based id.
+int add_reflector(Scene& s, const JsonReader& r, const std::string& where, const Reflector& refl) {
+  if (s.reflectors.size() >= static_cast<std::size_t>(Scene::kMaxReflectors))
+    r.fail_at(where, "is reflector number " + std::to_string(s.reflectors.size() + 1) +
+                         ", more than the " + std::to_string(Scene::kMaxReflectors) + " supported");
+  s.reflectors.push_back(refl);
+  return static_cast<int>(s.reflectors.size());
+}
+
+void read_environment(const JsonReader& r, const json& j, Environment& env) {
+  const std::string where = "environment";
+  r.object(j, where);
+  const std::string type = r.string(j, where, "type", "sky");
+  if (type == "sky") {
+    r.keys(j, where, {"type", "zenith", "horizon", "ground", "intensity"});
+    env.type = Environment::Type::Sky;
+    env.zenith = r.vec3(j, where, "zenith", env.zenith, 0.0f, 1e6f);
+    env.horizon = r.vec3(j, where, "horizon", env.horizon, 0.0f, 1e6f);
+    env.ground = r.vec3(j, where, "ground", env.ground, 0.0f, 1e6f);
+  } else if (type == "constant") {
+    r.keys(j, where, {"type", "color", "intensity"});
+    env.type = Environment::Type::Constant;
+    env.constant = r.vec3(j, where, "color", env.constant, 0.0f, 1e6f);
+  } else {
+    r.fail_at("environment.type", "must be \"sky\" or \"constant\", not " + q(type));
+  }
+  env.intensity = r.number(j, where, "intensity", env.intensity, 0.0f, 1e6f);
+}
+
+void read_materials(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
+                    const fs::path& dir) {
+  r.object(j, "materials");
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string where = "materials." + it.key();
+    const json& m = r.object(it.value(), where);
+    r.keys(m, where,
+           {"albedo", "metallic", "roughness", "reflectance", "emission", "albedo_texture",
+            "normal_texture", "normal_strength", "transparent", "ior"});
+    Material mat;
+    mat.name = it.key();
+    if (mat.name.empty()) r.fail_at(where, "needs a non-empty name");
+    mat.albedo = r.vec3(m, where, "albedo", mat.albedo, 0.0f, 1.0f);
+    mat.metallic = r.number(m, where, "metallic", mat.metallic, 0.0f, 1.0f);
+    mat.roughness = r.number(m, where, "roughness", mat.roughness, 0.0f, 1.0f);
+    mat.reflectance = r.number(m, where, "reflectance", mat.reflectance, 0.0f, 1.0f);
+    mat.emission = r.vec3(m, where, "emission", mat.emission, 0.0f, 1e6f);
+    mat.normal_strength = r.number(m, where, "normal_strength", mat.normal_strength, 0.0f, 4.0f);
+    mat.transparent = r.boolean(m, where, "transparent", mat.transparent);
+    mat.ior = r.number(m, where, "ior", mat.ior, 1.0f, 3.0f);
+    for (const char* key : {"albedo_texture", "normal_texture"}) {
+      if (!m.contains(key)) continue;
+      const std::string w = JsonReader::join(where, key);
+      const std::string context = "scene file " + q(r.file()) + ": " + q(w) + ": ";
+      const fs::path p = resolve_inside(dir, dir, r.string(m[key], w), context, "texture");
+      const int image = add_image(s, ctx, p, context);
+      (std::string_view(key) == "albedo_texture" ? mat.albedo_texture : mat.normal_texture) = image;
+    }
+    s.materials.push_back(mat);
+  }
+}
+
+int find_material(const JsonReader& r, const Scene& s, const json& obj, const std::string& where) {
+  const std::string name = r.string(obj["material"], JsonReader::join(where, "material"));
+  for (std::size_t i = 0; i < s.materials.size(); ++i)
+    if (s.materials[i].name == name) return static_cast<int>(i);
+  std::string list;
+  for (const Material& m : s.materials) list += (list.empty() ? "" : ", ") + m.name;
+  r.fail_at(JsonReader::join(where, "material"),
+            "names the unknown material " + q(name) +
+                " (materials: " + (list.empty() ? "none" : list) + ")");
+}
+
+void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
+                 const fs::path& dir) {
+  r.array(j, "meshes");
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string where = JsonReader::index("meshes", i);
+    const json& m = r.object(j[i], where);
+    r.keys(m, where, {"obj", "material", "translate", "rotate_deg", "scale", "reflector"});
+    if (!m.contains("obj")) r.fail_at(where + ".obj", "is required");
+    const std::string rel = r.string(m["obj"], where + ".obj");
+    const std::string context = "scene file " + q(r.file()) + ": " + q(where + ".obj") + ": ";
+    const fs::path obj = resolve_inside(dir, dir, rel, context, "OBJ");
+    std::error_code ec;
+    if (!fs::is_regular_file(obj, ec)) fail(context + "OBJ file " + q(obj) + " does not exist");
+    const int material = m.contains("material") ? find_material(r, s, m, where) : -1;
+    const glm::mat4 transform = read_transform(r, m, where);
+    int reflector = 0;
+    if (m.contains("reflector")) {
+      if (!m["reflector"].is_object())
+        r.fail_at(where + ".reflector",
+                  "must be an object with center, tangent, bitangent and half_extents");
+      reflector = add_reflector(s, r, where + ".reflector",
+                                read_reflector(r, m["reflector"], where + ".reflector"));
+    }
+    const std::size_t first = s.meshes.size();
+    try {
+      append_obj_impl(s, ctx, obj, dir, transform, material);
+    } catch (const InputError& e) {
+      fail(context + e.what());
+    }
+    for (std::size_t k = first; k < s.meshes.size(); ++k) s.meshes[k].reflector = reflector;
+  }
+}
+
+void read_primitives(const JsonReader& r, const json& j, Scene& s) {
+  r.array(j, "primitives");
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string where = JsonReader::index("primitives", i);
+    const json& p = r.object(j[i], where);
+    if (!p.contains("type")) r.fail_at(where + ".type", "is required");
+    const std::string type = r.string(p["type"], where + ".type");
+    const std::initializer_list<std::string_view> common = {
+        "type", "name", "material", "translate", "rotate_deg", "scale", "reflector"};
+    auto allowed = [&](std::initializer_list<std::string_view> extra) {
+      std::vector<std::string_view> all(common);
+      all.insert(all.end(), extra);
+      r.keys(p, where, all, " for a " + type);
+    };
+    Mesh mesh;
+    glm::vec2 plane_size(0.0f);
+    if (type == "plane") {
+      allowed({"size", "uv_scale"});
+      if (!p.contains("size")) r.fail_at(where + ".size", "is required");
+      plane_size = r.vec2(p["size"], where + ".size", 1e-6f, 1e6f);
+      mesh = meshgen::plane(plane_size, r.number(p, where, "uv_scale", 1.0f, 1e-6f, 1e6f));
+    } else if (type == "box") {
+      allowed({"extents"});
+      mesh = meshgen::box(r.vec3(p, where, "extents", glm::vec3(1.0f), 1e-6f, 1e6f));
+    } else if (type == "sphere") {
+      allowed({"radius", "segments", "rings"});
+      mesh = meshgen::sphere(r.number(p, where, "radius", 0.5f, 1e-6f, 1e6f),
+                             r.integer(p, where, "segments", 48, 3, 1024),
+                             r.integer(p, where, "rings", 24, 2, 1024));
+    } else if (type == "cylinder") {
+      allowed({"radius", "height", "segments"});
+      mesh = meshgen::cylinder(r.number(p, where, "radius", 0.5f, 1e-6f, 1e6f),
+                               r.number(p, where, "height", 1.0f, 1e-6f, 1e6f),
+                               r.integer(p, where, "segments", 32, 3, 1024));
+    } else {
+      r.fail_at(where + ".type",
+                "must be \"plane\", \"box\", \"sphere\" or \"cylinder\", not " + q(type));
+    }
+    const glm::mat4 transform = read_transform(r, p, where);
+    meshgen::transform(mesh, transform);
+    mesh.name = r.string(p, where, "name", type + std::to_string(i));
+    mesh.material = p.contains("material") ? find_material(r, s, p, where) : default_material(s);
+    if (p.contains("reflector")) {
+      const std::string w = where + ".reflector";
+      const json& rj = p["reflector"];
+      if (rj.is_boolean()) {
+        if (type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
+        if (rj.get<bool>()) {
+          Reflector refl;
+          const glm::vec3 tx(transform * glm::vec4(1, 0, 0, 0)),
+              tz(transform * glm::vec4(0, 0, 1, 0));
+          refl.center = glm::vec3(transform * glm::vec4(0, 0, 0, 1));
+          refl.tangent = glm::normalize(tx);
+          refl.bitangent = glm::normalize(tz);
+          refl.half_extents = 0.5f * plane_size * glm::vec2(glm::length(tx), glm::length(tz));
+          mesh.reflector = add_reflector(s, r, w, refl);
+        }
+      } else if (rj.is_object()) {
+        mesh.reflector = add_reflector(s, r, w, read_reflector(r, rj, w));
+      } else {
+        r.fail_at(w, "must be true, false or a rectangle object");
+      }
+    }
+    s.meshes.push_back(std::move(mesh));
+  }
+}
+
+void read_lights(const JsonReader& r, const json& j, Scene& s) {
+  r.array(j, "lights");
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string where = JsonReader::index("lights", i);
+    const json& l = r.object(j[i], where);
+    if (!l.contains("type")) r.fail_at(where + ".type", "is required");
+    const std::string type = r.string(l["type"], where + ".type");
+    Light light;
+    if (type == "point") {
+      r.keys(l, where, {"type", "position", "color", "intensity", "range"});
+      light.type = Light::Type::Point;
+      light.position = r.required_vec3(l, where, "position");
+      light.range = r.number(l, where, "range", light.range, 1e-6f, 1e7f);
+    } else if (type == "directional") {
+      r.keys(l, where, {"type", "direction", "color", "intensity"});
+      light.type = Light::Type::Directional;
+      if (!l.contains("direction")) r.fail_at(where + ".direction", "is required");
+      light.direction = r.direction(l["direction"], where + ".direction");
+    } else {
+      r.fail_at(where + ".type", "must be \"point\" or \"directional\", not " + q(type));
+    }
+    light.color = r.vec3(l, where, "color", light.color, 0.0f, 1e6f);
+    light.intensity = r.number(l, where, "intensity", light.intensity, 0.0f, 1e9f);
+    s.lights.push_back(light);
+  }
+}
+
+void read_cameras(const JsonReader& r, const json& j, Scene& s) {
+  r.array(j, "cameras");
+  if (j.empty()) r.fail_at("cameras", "must not be empty (leave it out to frame the scene)");
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string where = JsonReader::index("cameras", i);
+    const json& c = r.object(j[i], where);
+    r.keys(c, where, {"name", "position", "target", "up", "fov_y", "near", "far"});
+    Camera cam;
+    cam.name = r.string(c, where, "name", i == 0 ? "default" : "camera" + std::to_string(i));
+    for (const Camera& other : s.cameras)
+      if (other.name == cam.name)
+        r.fail_at(where + ".name", "repeats the camera name " + q(cam.name));
+    cam.position = r.vec3(c, where, "position", cam.position);
+    cam.target = r.vec3(c, where, "target", cam.target);
+    if (c.contains("up")) cam.up = r.direction(c["up"], where + ".up");
+    cam.fov_y_deg = r.number(c, where, "fov_y", cam.fov_y_deg, 1.001f, 178.999f);
+    cam.near_plane = r.number(c, where, "near", cam.near_plane, 1e-6f, 1e7f);
+    cam.far_plane = r.number(c, where, "far", cam.far_plane, 1e-6f, 1e7f);
+    if (!(cam.far_plane > cam.near_plane)) r.fail_at(where + ".far", "must be greater than near");
+    if (glm::length(cam.target - cam.position) < 1e-6f)
+      r.fail_at(where + ".target", "must differ from the position");
+    if (glm::length(glm::cross(glm::normalize(cam.target - cam.position), cam.up)) <
+        1e-6f * glm::length(cam.up))
+      r.fail_at(where + ".up", "must not be parallel to the view direction");
+    s.cameras.push_back(cam);
+  }
+}
+
+}  // namespace
+
+// ---- public API -----------------------------------------------------------------------------
+
+Scene load_scene_json(const fs::path& path) {
+  const json j = parse_json_file(path);
+  const JsonReader r(path);
+  const fs::path dir = directory_of(path);
+  r.keys(j, "",
+         {"name", "description", "ambient", "environment", "materials", "meshes", "primitives",
+          "lights", "cameras"});
+  Scene s;
+  LoadContext ctx;
+  s.name = r.string(j, "", "name", path.stem().string());
+  if (j.contains("description")) r.string(j["description"], "description");
+  s.ambient = r.number(j, "", "ambient", s.ambient, 0.0f, 1e6f);
+  if (j.contains("environment")) read_environment(r, j["environment"], s.environment);
+  if (j.contains("materials")) read_materials(r, j["materials"], s, ctx, dir);
+  if (j.contains("meshes")) read_meshes(r, j["meshes"], s, ctx, dir);
+  if (j.contains("primitives")) read_primitives(r, j["primitives"], s);
+  if (s.meshes.empty()) fail("scene file " + q(path) + " has no meshes or primitives");
+  if (s.triangle_count() > kMaxTriangles)
+    fail("scene file " + q(path) + " has more than " + std::to_string(kMaxTriangles) +
+         " triangles, more than supported");
+  if (j.contains("lights")) read_lights(r, j["lights"], s);
+  if (s.lights.size() > static_cast<std::size_t>(Scene::kMaxLights))
+    r.fail_at("lights", "has " + std::to_string(s.lights.size()) + " lights, more than the " +
+                            std::to_string(Scene::kMaxLights) + " supported");
+  if (j.contains("cameras"))
+    read_cameras(r, j["cameras"], s);
+  else
+    s.cameras.push_back(framing_camera(s));
+  validate_file(s, path);
+  return s;
+}
+
+}  // namespace ssr
