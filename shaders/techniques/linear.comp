@@ -19,7 +19,10 @@ void main() {
   int steps = min(params.max_steps, int(params.max_distance / params.step_size) + 1);
 
   vec3 prev = origin;
-  float prev_gap = 0.0;  // scene z - ray z at the previous sample (< 0: ray in front of the scene)
+  // scene z - ray z at the previous sample (< 0: the ray was in front of the visible surface).
+  // A hit needs the ray to cross from in front to behind: a ray that starts "behind" its own
+  // surface because the depth buffer is quantised per pixel does not hit itself.
+  float prev_gap = 1.0;
   vec4 result = vec4(0.0);
   for (int i = 1; i <= steps; ++i) {
     vec3 pos = origin + dir * (params.step_size * float(i));
@@ -28,9 +31,9 @@ void main() {
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) break;
     float gap = scene_view_z(uv) - pos.z;  // > 0: the sample is behind the visible surface
-    if (gap > 0.0 && gap < params.thickness) {
+    if (gap > 0.0 && gap < params.thickness && prev_gap <= 0.0) {
       vec3 hit = pos;
-      if (params.depth_interp != 0 && i > 1 && prev_gap < 0.0) {
+      if (params.depth_interp != 0) {
         float t = prev_gap / (prev_gap - gap);  // where (scene z - ray z) crosses 0
         hit = mix(prev, pos, clamp(t, 0.0, 1.0));
       }

@@ -65,14 +65,6 @@ void progress(std::size_t done, std::size_t total, const std::string& what) {
   std::fflush(stdout);
 }
 
-std::string label_of(const TechniqueResult& r, const std::string& swept_key) {
-  if (!r.preset.empty()) return r.technique + " [" + r.preset + "]";
-  if (swept_key.empty()) return r.technique;
-  for (const auto& [k, v] : r.params)
-    if (k == swept_key) return r.technique + " " + k.substr(r.technique.size() + 1) + "=" + v;
-  return r.technique;
-}
-
 void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
                  const std::vector<Variant>& variants, const std::string& clock) {
   const fs::path base(o.plot);
@@ -98,7 +90,7 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
       }
       PlotSeries& s = pareto.series[series_of[name]];
       s.points.push_back({t.time_ms.median, t.error.psnr_traceable});
-      s.labels.push_back(t.preset.empty() ? label_of(t, variants[i].swept_key).substr(t.technique.size()) : t.preset);
+      s.labels.push_back(t.preset.empty() ? t.label.substr(t.technique.size()) : t.preset);
     }
     for (PlotSeries& s : pareto.series) {  // sort each curve by time so lines do not zigzag
       std::vector<std::size_t> idx(s.points.size());

@@ -55,6 +55,7 @@ nlohmann::json technique_json(const TechniqueResult& r) {
   for (const auto& p : r.passes) passes.push_back({{"name", p.name}, {"ms", p.ms}});
   return nlohmann::json{
       {"technique", r.technique},
+      {"label", r.label.empty() ? r.technique : r.label},
       {"preset", r.preset},
       {"params", std::move(params)},
       {"time_ms", {{"median", r.time_ms.median}, {"min", r.time_ms.min}, {"max", r.time_ms.max}}},
@@ -212,8 +213,8 @@ std::string results_table(const RunResults& run, const std::string& clock) {
       "nonfinite"};
   std::vector<std::vector<std::string>> rows;
   for (const auto& r : run.results) {
-    std::string name = r.technique;
-    if (!r.preset.empty()) name += " [" + r.preset + "]";
+    std::string name = r.label;
+    if (name.empty()) name = r.preset.empty() ? r.technique : r.technique + " [" + r.preset + "]";
     const double tof = time_over_floor(r);
     rows.push_back({
         name,

@@ -31,6 +31,7 @@ struct DeviceInfo {
 struct TechniqueResult {
   std::string technique;
   std::string preset;  // "" when none
+  std::string label;   // what tables and plots call it, e.g. "linear max_steps=64" ("" = technique)
   // key -> value as text, in table order. In JSON, values that parse as numbers become numbers,
   // true/false become booleans, anything else stays a string.
   std::vector<std::pair<std::string, std::string>> params;

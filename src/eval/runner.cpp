@@ -135,6 +135,7 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.score = frame.score(*t);
   ev.result.technique = variant.technique;
   ev.result.preset = variant.preset;
+  ev.result.label = variant.label();
   ev.result.params = param_list(*t);
   ev.result.time_ms = tm.technique;
   ev.result.passes = tm.passes;

@@ -28,9 +28,10 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(reflection.id(), 0, GL_RGBA, GL_FLOAT, zero);
     if (in.scene.reflectors.empty()) return;
-    if (!mirror_ || mirror_scene_ != &in.scene) {
+    if (!mirror_ || mirror_scene_ != in.renderer.scene_id()) {
+      mirror_.reset();
       mirror_ = std::make_unique<Renderer>(in.scene, in.width, in.height, shaders_);
-      mirror_scene_ = &in.scene;
+      mirror_scene_ = in.renderer.scene_id();
     }
     mirror_->resize(in.width, in.height);
     const Camera& cam = in.renderer.camera();
@@ -67,7 +68,7 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
   gl::ShaderSource shaders_;
   gl::Program resolve_;
   std::unique_ptr<Renderer> mirror_;
-  const Scene* mirror_scene_ = nullptr;
+  std::uint64_t mirror_scene_ = 0;  // Renderer::scene_id() of the frame being mirrored
 };
 
 }  // namespace

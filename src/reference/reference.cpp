@@ -48,7 +48,7 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
 
  private:
   gl::Program program_;
-  const Scene* bvh_scene_ = nullptr;
+  std::uint64_t bvh_scene_ = 0;  // Renderer::scene_id() the BVH was built for
   std::unique_ptr<EmbreeScene> bvh_;
   gl::Texture2D ideal_;
   std::vector<PixelClass> classes_;
@@ -65,9 +65,10 @@ ReferenceOutputs reference_outputs(const Technique& t) {
 void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflection) {
   gl::ScopedPass pass(in.timer, "reference");
   const Scene& scene = in.scene;
-  if (!bvh_ || bvh_scene_ != &scene) {
+  if (!bvh_ || bvh_scene_ != in.renderer.scene_id()) {
+    bvh_.reset();
     bvh_ = std::make_unique<EmbreeScene>(scene);
-    bvh_scene_ = &scene;
+    bvh_scene_ = in.renderer.scene_id();
   }
   const int w = in.width, h = in.height;
   const std::size_t npx = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);

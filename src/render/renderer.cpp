@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/errors.h"
@@ -28,6 +29,8 @@ ViewMode parse_view_mode(const std::string& name) {
 
 Renderer::Renderer(const Scene& scene, int width, int height, gl::ShaderSource shaders)
     : scene_(scene), shaders_(std::move(shaders)) {
+  static std::atomic<std::uint64_t> next_id{1};
+  scene_id_ = next_id++;
   // Reversed-Z: depth 1 at the near plane, 0 at the far plane, in [0,1] clip space.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   reload_shaders();

@@ -47,6 +47,9 @@ class Renderer {
   int width() const { return width_; }
   int height() const { return height_; }
   const Scene& scene() const { return scene_; }
+  // Unique for every Renderer (and so every scene upload) in the process: techniques that cache
+  // per-scene data key it on this, never on an address that a later scene may reuse.
+  std::uint64_t scene_id() const { return scene_id_; }
   const gl::ShaderSource& shaders() const { return shaders_; }
   // Rebuilds the fixed passes' programs (live reload); keeps the old ones on failure and throws.
   void reload_shaders();
@@ -90,6 +93,7 @@ class Renderer {
   CameraMatrices matrices_{};
   Camera camera_{};
   int frame_index_ = 0;
+  std::uint64_t scene_id_ = 0;
 };
 
 }  // namespace ssr

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# `ssrlab compare` and `ssrlab bench` write valid JSON with every field of DESIGN §7, a CSV with
+# one row per result, and SVG plots; bad input is refused with exit 2 and nothing written.
+set -eu
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$SSRLAB" compare --scene gallery --size 96x54 --frames 1 --out "$tmp/grid.png" --json "$tmp/compare.json" \
+  --preset thesis-lq --set reference.samples=16
+"$SSRLAB" bench --scenes gallery,cornell --sizes 64x36,96x54 --techniques none,linear \
+  --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 \
+  --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
+
+python3 - "$tmp" <<'PY'
+import json, math, os, sys
+tmp = sys.argv[1]
+def check_run(run, where, with_device=True):
+    keys = {"size", "scene", "results", "inherent_psnr"} | ({"device", "revision"} if with_device else set())
+    missing = keys - run.keys()
+    assert not missing, f"{where}: missing {missing}"
+    if with_device:
+        assert set(run["device"]) >= {"renderer", "version", "clock"}, where
+        assert run["device"]["clock"] in ("cpu", "gpu"), where
+    assert len(run["size"]) == 2 and all(isinstance(v, int) for v in run["size"]), where
+    assert math.isfinite(run["inherent_psnr"]), where
+    assert run["results"], f"{where}: no results"
+    for r in run["results"]:
+        need = {"technique", "params", "time_ms", "passes", "floor_ms", "error", "nonfinite"}
+        assert need <= r.keys(), f"{where}: result lacks {need - r.keys()}"
+        assert set(r["time_ms"]) >= {"median", "min", "max"}, where
+        assert r["time_ms"]["min"] <= r["time_ms"]["median"] <= r["time_ms"]["max"], where
+        err = {"rmse", "psnr", "rmse_traceable", "psnr_traceable", "rmse_missing", "coverage"}
+        assert err <= r["error"].keys(), f"{where}: error lacks {err - r['error'].keys()}"
+        for k in err:
+            assert math.isfinite(r["error"][k]), f"{where}: {k} not finite"
+        assert 0 <= r["error"]["coverage"] <= 1, where
+        assert r["nonfinite"] == 0, f"{where}: {r['technique']} has non-finite values"
+        assert all({"name", "ms"} <= p.keys() for p in r["passes"]), where
+        assert r["floor_ms"] >= 0, where
+    return run
+
+c = check_run(json.load(open(f"{tmp}/compare.json")), "compare")
+names = [r["technique"] for r in c["results"]]
+assert "linear" in names and "none" in names, names
+assert any(r.get("preset") == "thesis-lq" for r in c["results"]), "preset missing"
+thesis = next(r for r in c["results"] if r.get("preset") == "thesis-lq")
+assert thesis["params"]["linear.max_steps"] == 128 and thesis["params"]["linear.depth_interp"] is False
+
+b = json.load(open(f"{tmp}/bench.json"))
+assert {"device", "revision", "runs"} <= b.keys()
+assert len(b["runs"]) == 4, len(b["runs"])          # 2 scenes x 2 sizes
+for i, run in enumerate(b["runs"]):
+    check_run(run, f"bench run {i}", with_device=False)
+    assert len(run["results"]) == 4                  # none, linear x 2 steps, thesis-hq
+steps = sorted(r["params"]["linear.max_steps"] for r in b["runs"][0]["results"] if r["technique"] == "linear" and not r.get("preset"))
+assert steps == [8, 32], steps
+
+rows = open(f"{tmp}/bench.csv").read().strip().split("\n")
+assert rows[0].startswith("scene,width,height,technique"), rows[0]
+assert len(rows) == 1 + 16, len(rows)
+
+svgs = sorted(f for f in os.listdir(tmp) if f.endswith(".svg"))
+assert "bench.svg" in svgs, svgs
+assert any("resolution" in f for f in svgs), svgs
+assert any("sweep" in f for f in svgs), svgs
+for f in svgs:
+    text = open(os.path.join(tmp, f)).read()
+    assert text.count("<svg") == 1 and "</svg>" in text, f
+    assert "nan" not in text.lower().replace("nanometre", ""), f
+print(f"compare/bench outputs ok: {len(svgs)} plots")
+PY
+
+# Bad input: exit 2, nothing written.
+for args in "bench --json $tmp/x.json --sweep linear.max_steps=0,8" \
+            "bench --json $tmp/x.json --sweep dda.max_steps=8" \
+            "bench --json $tmp/x.json --sizes 0x0" \
+            "bench --json $tmp/x.json --techniques nope" \
+            "bench --json $tmp/x.json --preset nope" \
+            "bench --json $tmp/x.json --preset roberts-default" \
+            "bench --plot $tmp/x.png" \
+            "bench" \
+            "compare --out $tmp/x.png --techniques linear,,none" \
+            "compare --out $tmp/x.png --set reference.samples=0" \
+            "compare --out $tmp/x.jpg"; do
+  set +e; "$SSRLAB" $args >/dev/null 2>"$tmp/err"; rc=$?; set -e
+  [ "$rc" = 2 ] || { echo "FAIL: exit $rc for: ssrlab $args"; cat "$tmp/err"; exit 1; }
+  [ "$(grep -vc '^ssrlab: GL via' "$tmp/err")" = 1 ] || { echo "FAIL: not one line: ssrlab $args"; cat "$tmp/err"; exit 1; }
+  ls "$tmp"/x.* >/dev/null 2>&1 && { echo "FAIL: output left by: ssrlab $args"; exit 1; }
+done
+echo "1 passed, 0 failed"
