@@ -100,26 +100,29 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   };
 
   // --- per pixel: its samples -------------------------------------------------------------------
-  std::vector<shared::ReferencePixel> pixels;
-  std::vector<int> pixel_start(npx + 1, 0);
+  std::vector<std::size_t> pixel_start(npx + 1, 0);  // 8K x 4096 samples overflows int
   for (std::size_t i = 0; i < npx; ++i) {
     const bool reflective = depth[i] > 0.0f && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE);
     const float rough = std::clamp(normal_rough[i * 4 + 3], 0.0f, 1.0f);
     const int n = !reflective ? 0 : (rough < params_.mirror_roughness ? 1 : params_.samples);
-    pixel_start[i + 1] = pixel_start[i] + n;
+    pixel_start[i + 1] = pixel_start[i] + static_cast<std::size_t>(n);
   }
-  const std::size_t total = static_cast<std::size_t>(pixel_start[npx]);
+  const std::size_t total = pixel_start[npx];
   rays_ = total;
-  std::vector<shared::ReferenceSample> samples(total);
   std::vector<std::uint8_t> cls(npx, static_cast<std::uint8_t>(PixelClass::NotReflective));
+  // Rows [batch_y0, batch_y1) are traced into `samples` (indexed from batch_first), shaded on
+  // the GPU, and dropped: memory stays bounded at any size and sample count.
+  int batch_y0 = 0, batch_y1 = 0;
+  std::size_t batch_first = 0;
+  std::vector<shared::ReferenceSample> samples;
 
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   std::atomic<int> next_row{0};
   auto worker = [&] {
-    for (int y; (y = next_row.fetch_add(1)) < h;) {
+    for (int y; (y = next_row.fetch_add(1)) < batch_y1;) {
       for (int x = 0; x < w; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        const int n = pixel_start[i + 1] - pixel_start[i];
+        const int n = static_cast<int>(pixel_start[i + 1] - pixel_start[i]);
         if (n == 0) continue;
         const glm::dvec4 ndc((x + 0.5) / w * 2 - 1, (y + 0.5) / h * 2 - 1, depth[i], 1.0);
         glm::dvec4 pv = inv_proj * ndc;
@@ -150,7 +153,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
             if (glm::dot(dir, n_ws) <= 0.0f) dir = glm::reflect(-v_ws, n_ws);
           }
           dir = glm::normalize(dir);
-          shared::ReferenceSample& s = samples[static_cast<std::size_t>(pixel_start[i] + k)];
+          shared::ReferenceSample& s = samples[pixel_start[i] + static_cast<std::size_t>(k) - batch_first];
           s.direction = glm::vec4(dir, 0.0f);
           const RayHit hit = bvh_->trace(origin, dir);
           if (!hit.hit) {
@@ -192,17 +195,6 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& t : pool) t.join();
-
-  // Classes, flipped to row 0 = top like every read-back image.
-  classes_.assign(npx, PixelClass::NotReflective);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      classes_[static_cast<std::size_t>(h - 1 - y) * w + x] =
-          static_cast<PixelClass>(cls[static_cast<std::size_t>(y) * w + x]);
-
   // --- GPU shading of the hits, in batches ------------------------------------------------------
   std::vector<shared::ReferenceMaterial> mats;
   std::vector<int> slot_of_image(scene.images.size(), -1);
@@ -238,24 +230,33 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   glBindImageTexture(IMG_REF_IDEAL, ideal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glUseProgram(program_.id());
 
-  std::size_t i = 0;
-  while (i < npx) {
-    // Gather whole pixels until the batch holds enough samples.
+  std::vector<shared::ReferencePixel> pixels;
+  while (batch_y1 < h) {
+    // Whole rows, as many as fit in one batch (at least one).
+    batch_y0 = batch_y1;
+    batch_first = pixel_start[static_cast<std::size_t>(batch_y0) * w];
+    do {
+      ++batch_y1;
+    } while (batch_y1 < h && pixel_start[static_cast<std::size_t>(batch_y1 + 1) * w] - batch_first <= kMaxBatchSamples);
+    const std::size_t batch_end = pixel_start[static_cast<std::size_t>(batch_y1) * w];
+    if (batch_end == batch_first) continue;  // no reflective pixel in these rows
+    samples.assign(batch_end - batch_first, shared::ReferenceSample{});
+    next_row = batch_y0;
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (auto& t : pool) t.join();
+
     pixels.clear();
-    const std::size_t first_sample = static_cast<std::size_t>(pixel_start[i]);
-    for (; i < npx; ++i) {
-      const int n = pixel_start[i + 1] - pixel_start[i];
+    for (std::size_t i = static_cast<std::size_t>(batch_y0) * w; i < static_cast<std::size_t>(batch_y1) * w; ++i) {
+      const int n = static_cast<int>(pixel_start[i + 1] - pixel_start[i]);
       if (n == 0) continue;
-      if (!pixels.empty() && static_cast<std::size_t>(pixel_start[i + 1]) - first_sample > kMaxBatchSamples) break;
       pixels.push_back({glm::ivec4(static_cast<int>(i % static_cast<std::size_t>(w)),
                                    static_cast<int>(i / static_cast<std::size_t>(w)),
-                                   pixel_start[i] - static_cast<int>(first_sample), n)});
+                                   static_cast<int>(pixel_start[i] - batch_first), n)});
     }
-    if (pixels.empty()) break;
-    const std::size_t end_sample = static_cast<std::size_t>(pixel_start[i]);
-    gl::Buffer sbuf = gl::make_buffer(
-        "reference samples", static_cast<GLsizeiptr>((end_sample - first_sample) * sizeof(shared::ReferenceSample)),
-        samples.data() + first_sample, 0);
+    gl::Buffer sbuf = gl::make_buffer("reference samples",
+                                      static_cast<GLsizeiptr>(samples.size() * sizeof(shared::ReferenceSample)),
+                                      samples.data(), 0);
     gl::Buffer pbuf = gl::make_buffer("reference pixels",
                                       static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
                                       pixels.data(), 0);
@@ -266,6 +267,13 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glFinish();  // the batch's buffers die at the end of this scope
   }
+
+  // Classes, flipped to row 0 = top like every read-back image.
+  classes_.assign(npx, PixelClass::NotReflective);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      classes_[static_cast<std::size_t>(h - 1 - y) * w + x] =
+          static_cast<PixelClass>(cls[static_cast<std::size_t>(y) * w + x]);
 }
 
 }  // namespace ssr
