@@ -10,12 +10,17 @@ struct NoParams {};
 class NoneTechnique final : public TechniqueWithParams<NoParams> {
  public:
   NoneTechnique() : TechniqueWithParams("none", {}) {}
-  void load(const gl::ShaderSource&) override {}
+  void load(const gl::ShaderSource& src) override {
+    program_ = gl::Program::compute(src, "techniques/none.comp");
+  }
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
     gl::ScopedPass pass(in.timer, "none");
-    const float zero[4] = {0, 0, 0, 0};
-    glClearTexImage(reflection.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    program_.dispatch_2d(in.width, in.height);  // out-of-range invocations: imageStore ignores them
   }
+
+ private:
+  gl::Program program_;
 };
 
 }  // namespace

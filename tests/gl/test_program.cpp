@@ -62,7 +62,8 @@ TEST(Program, CompileErrorNamesFileAndLine) {
 TEST(Program, EveryEmbeddedProgramCompiles) {
   gl::ShaderSource embedded;
   for (const char* p : {"render/lighting.comp", "render/composite.comp", "render/display.comp",
-                        "techniques/linear.comp"})
+                        "techniques/linear.comp", "techniques/none.comp", "eval/floor.comp",
+                        "reference/shade.comp", "reference/planar_resolve.comp"})
     EXPECT_NO_THROW(gl::Program::compute(embedded, p)) << p;
   EXPECT_NO_THROW(gl::Program::graphics(embedded, "render/gbuffer.vert", "render/gbuffer.frag"));
   test::expect_no_gl_errors();
