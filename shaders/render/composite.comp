@@ -9,6 +9,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = TEX_REFLECTION) uniform sampler2D reflection_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_color;
+layout(location = 0) uniform int u_blend;  // 0 standard, 1 Roberts: mix(lit, reflection, a)
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -24,6 +25,7 @@ void main() {
   vec3 env = environment_radiance(r_ws);
   vec4 refl = is_reflective(g) ? texelFetch(reflection_tex, p, 0) : vec4(0.0);
   vec3 weight = specular_weight(f0_of(g.albedo, g.metallic, g.reflectance), dot(g.n_vs, v), g.roughness);
-  vec3 color = lit + weight * mix(env, refl.rgb, clamp(refl.a, 0.0, 1.0));
+  vec3 color = u_blend == 1 ? mix(lit, refl.rgb, clamp(refl.a, 0.0, 1.0))
+                            : lit + weight * mix(env, refl.rgb, clamp(refl.a, 0.0, 1.0));
   imageStore(out_color, p, vec4(color, 1.0));
 }

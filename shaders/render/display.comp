@@ -11,6 +11,13 @@ layout(binding = TEX_COLOR) uniform sampler2D color_tex;
 layout(binding = IMG_OUT, rgba8) uniform writeonly image2D out_display;
 layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_linear;
 layout(location = 0) uniform int u_view;
+layout(binding = TEX_DEBUG) uniform sampler2D debug_tex;
+
+// Black -> purple -> orange -> yellow, for the debug heat maps.
+vec3 heat(float t) {
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(1.6 * t, 1.6 * t * t, 0.5 * sin(3.14159 * t) + 0.2 * t * t * t), 0.0, 1.0);
+}
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -36,6 +43,9 @@ void main() {
     else if (u_view == VIEW_ALBEDO) v = g.albedo;
     else if (u_view == VIEW_ROUGHNESS) v = vec3(g.roughness);
     else if (u_view == VIEW_METALLIC) v = vec3(g.metallic);
+    else if (u_view == VIEW_STEPS) v = heat(texelFetch(debug_tex, p, 0).x / 256.0);
+    else if (u_view == VIEW_HITS) v = vec3(texelFetch(debug_tex, p, 0).y);
+    else if (u_view == VIEW_DISTANCE) v = heat(texelFetch(debug_tex, p, 0).z / 20.0);
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);

@@ -1,4 +1,5 @@
 // Named binding slots, shared by the C++ passes and the GLSL that reads them.
+#pragma once
 #include "shared/interop.h"
 
 // Uniform buffers
@@ -20,6 +21,8 @@
 #define TEX_EMISSION 7          // RGBA16F emitted radiance (G-buffer)
 #define TEX_ALBEDO_MAP 8        // material albedo texture (G-buffer draw)
 #define TEX_NORMAL_MAP 9        // material normal map (G-buffer draw)
+#define TEX_BACK_DEPTH 13       // D32F depth of the nearest back faces (techniques that ask)
+#define TEX_DEBUG 14            // RGBA16F tracer debug: steps, hit share, hit distance
 
 // Images (image units)
 #define IMG_OUT 0

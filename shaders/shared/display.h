@@ -1,4 +1,5 @@
 // What the display pass shows (--view); the C++ enum and the GLSL switch share these numbers.
+#pragma once
 #include "shared/interop.h"
 
 #define VIEW_FINAL 0        // composited colour, tone mapped
@@ -11,4 +12,7 @@
 #define VIEW_ROUGHNESS 7
 #define VIEW_METALLIC 8
 #define VIEW_MASK 9         // reflective pixels white, planar reflectors tinted
-#define VIEW_COUNT 10
+#define VIEW_STEPS 10       // tracer iterations per ray, heat map (0 .. 256+)
+#define VIEW_HITS 11        // share of the pixel's rays that hit, grey
+#define VIEW_DISTANCE 12    // mean hit distance, heat map (0 .. 20 world units)
+#define VIEW_COUNT 13

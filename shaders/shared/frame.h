@@ -1,4 +1,5 @@
 // Per-frame and per-draw uniform layouts (std140 in GLSL; identical C++ structs).
+#pragma once
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN

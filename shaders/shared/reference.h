@@ -1,5 +1,6 @@
 // Layouts of the ground truth's GPU shading pass (C++ traces with Embree, the GPU shades the hits
 // with the lit pass's own shade_surface, seen from the ray).
+#pragma once
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN

@@ -1,5 +1,6 @@
 // Parameters of `reference`, the ray-traced ground truth (Embree). C++ only: the GPU pass
 // takes its inputs as buffers.
+#pragma once
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN

@@ -4,6 +4,7 @@
 // Fixes the seeds' defects (DESIGN §10): samples come from the distribution of *visible*
 // normals (Heitz 2018), so no microfacet faces away from the viewer, and every random number is
 // in [0, 1) and every divisor clamped, so nothing divides by zero at xi -> 1.
+#pragma once
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN

@@ -1,5 +1,6 @@
 // Output transform shared by GLSL (display pass) and C++ (metrics): one definition, so the error
 // metrics see exactly the numbers the PNGs show. Written in the common subset of GLSL and GLM.
+#pragma once
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN

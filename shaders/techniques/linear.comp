@@ -1,50 +1,36 @@
 // `linear`: brute-force view-space march (see src/techniques/linear.cpp).
-#include "common/gbuffer.glsl"
+#include "common/ssr_common.glsl"
 #include "shared/linear.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { LinearParams params; };
-layout(binding = TEX_LIT) uniform sampler2D lit_tex;
-layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
-  GSample g = gbuffer_fetch(p);
-  if (!is_reflective(g)) { imageStore(out_reflection, p, vec4(0.0)); return; }
-
-  vec3 origin = g.pos_vs;
-  vec3 dir = reflect(normalize(origin), g.n_vs);
+TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   float near_z = -frame.clip.x;
   int steps = min(params.max_steps, int(params.max_distance / params.step_size) + 1);
-
+  bool backfaces = params.ray.backface_thickness != 0;
   vec3 prev = origin;
   // scene z - ray z at the previous sample (< 0: the ray was in front of the visible surface).
   // A hit needs the ray to cross from in front to behind: a ray that starts "behind" its own
   // surface because the depth buffer is quantised per pixel does not hit itself.
   float prev_gap = 1.0;
-  vec4 result = vec4(0.0);
   for (int i = 1; i <= steps; ++i) {
     vec3 pos = origin + dir * (params.step_size * float(i));
-    if (pos.z > near_z) break;  // crossed the near plane: nothing on screen there
+    if (pos.z > near_z) return trace_miss(float(i));  // crossed the near plane
     vec2 uv;
     float depth;
-    if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) break;
+    if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
     float gap = scene_view_z(uv) - pos.z;  // > 0: the sample is behind the visible surface
-    if (gap > 0.0 && gap < params.thickness && prev_gap <= 0.0) {
+    if (prev_gap <= 0.0 && inside_surface(uv, pos.z, params.thickness, backfaces)) {
       vec3 hit = pos;
-      if (params.depth_interp != 0) {
-        float t = prev_gap / (prev_gap - gap);  // where (scene z - ray z) crosses 0
-        hit = mix(prev, pos, clamp(t, 0.0, 1.0));
-      }
+      if (params.depth_interp != 0) hit = mix(prev, pos, clamp(prev_gap / (prev_gap - gap), 0.0, 1.0));
       vec2 hit_uv;
-      float hit_depth;
-      if (!project_to_uv(hit, hit_uv, hit_depth) || !uv_on_screen(hit_uv)) hit_uv = uv;
-      result = vec4(textureLod(lit_tex, hit_uv, 0.0).rgb, 1.0);
-      break;
+      if (!project_to_uv(hit, hit_uv, depth) || !uv_on_screen(hit_uv)) hit_uv = uv;
+      return TraceResult(true, hit_uv, float(i), length(hit - origin));
     }
     prev = pos;
     prev_gap = gap;
   }
-  imageStore(out_reflection, p, result);
+  return trace_miss(float(steps));
 }
+
+#include "common/ssr_main.glsl"

@@ -14,7 +14,7 @@ namespace ssr {
 const std::vector<std::string>& view_mode_names() {
   static const std::vector<std::string> names = {"final", "reflection", "confidence", "lit",
                                                  "normal", "depth", "albedo", "roughness",
-                                                 "metallic", "mask"};
+                                                 "metallic", "mask", "steps", "hits", "distance"};
   return names;
 }
 
@@ -81,6 +81,10 @@ void Renderer::resize(int width, int height) {
   if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RuntimeError("the G-buffer framebuffer is incomplete at " + std::to_string(width) +
                        "x" + std::to_string(height) + ".");
+  gbuffer_.back_depth = gl::Texture2D("gbuffer back-face depth", GL_DEPTH_COMPONENT32F, width, height);
+  gbuffer_.back_fbo = gl::Framebuffer("gbuffer back faces");
+  glNamedFramebufferTexture(gbuffer_.back_fbo.id(), GL_DEPTH_ATTACHMENT, gbuffer_.back_depth.id(), 0);
+  glNamedFramebufferDrawBuffer(gbuffer_.back_fbo.id(), GL_NONE);
   lit_ = gl::Texture2D("lit", GL_RGBA16F, width, height);
   // Techniques fetch the lit colour at fractional hit positions: bilinear.
   glTextureParameteri(lit_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -89,6 +93,10 @@ void Renderer::resize(int width, int height) {
   color_ = gl::Texture2D("color", GL_RGBA16F, width, height);
   display_ = gl::Texture2D("display", GL_RGBA8, width, height);
   linear_ = gl::Texture2D("display linear", GL_RGBA16F, width, height);
+  debug_ = gl::Texture2D("technique debug", GL_RGBA16F, width, height);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw RuntimeError("the GL has not enough memory for " + std::to_string(width) + "x" +
+                       std::to_string(height) + " targets.");
 }
 
 void Renderer::bind_frame_inputs() const {
@@ -102,6 +110,27 @@ void Renderer::bind_frame_inputs() const {
   glBindTextureUnit(TEX_LIT, lit_.id());
   glBindTextureUnit(TEX_REFLECTION, reflection_.id());
   glBindTextureUnit(TEX_COLOR, color_.id());
+  glBindTextureUnit(TEX_BACK_DEPTH, gbuffer_.back_depth.id());
+  glBindTextureUnit(TEX_DEBUG, debug_.id());
+}
+
+void Renderer::render_backfaces() {
+  // Two-sided scenes have no "inside": the back faces are those wound clockwise as seen from
+  // the camera. The nearest of them bounds each front surface's thickness (2012 blog).
+  glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_.back_fbo.id());
+  glViewport(0, 0, width_, height_);
+  const float depth_clear = 0.0f;
+  glClearNamedFramebufferfv(gbuffer_.back_fbo.id(), GL_DEPTH, 0, &depth_clear);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glUseProgram(gbuffer_prog_.id());
+  gpu_scene_->draw_gbuffer();
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
@@ -163,7 +192,18 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
 }
 
 void Renderer::run_technique(Technique& technique, gl::PassTimer* timer) {
+  if (technique.needs_backfaces()) {
+    bind_frame_inputs();
+    gl::ScopedPass pass(timer, "backfaces");
+    render_backfaces();
+  }
+  if (!technique.writes_debug()) {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(debug_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  }
+  blend_ = technique.composite_blend();
   bind_frame_inputs();
+  glBindImageTexture(IMG_OUT2, debug_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   TechniqueInputs in{*this, gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer};
   technique.run(in, reflection_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
@@ -175,6 +215,7 @@ void Renderer::composite_and_display(ViewMode view, gl::PassTimer* timer) {
   {
     gl::ScopedPass pass(timer, "composite");
     glBindImageTexture(IMG_OUT, color_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glProgramUniform1i(composite_prog_.id(), 0, blend_);
     composite_prog_.dispatch_2d(width_, height_);
   }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);

@@ -25,6 +25,7 @@ enum class ViewMode : int {
   Final = VIEW_FINAL, Reflection = VIEW_REFLECTION, Confidence = VIEW_CONFIDENCE,
   Lit = VIEW_LIT, Normal = VIEW_NORMAL, Depth = VIEW_DEPTH, Albedo = VIEW_ALBEDO,
   Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
+  Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE,
 };
 // Names as the CLI takes them ("final", "reflection", ...), in enum order.
 const std::vector<std::string>& view_mode_names();
@@ -67,6 +68,7 @@ class Renderer {
   const GBuffer& gbuffer() const { return gbuffer_; }
   const gl::Texture2D& lit() const { return lit_; }
   const gl::Texture2D& reflection() const { return reflection_; }
+  const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: steps, hit share, distance
   const gl::Texture2D& color() const { return color_; }
   const gl::Texture2D& display() const { return display_; }  // RGBA8 (sRGB values)
   const CameraMatrices& matrices() const { return matrices_; }
@@ -87,10 +89,12 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_scene_;
   int width_ = 0, height_ = 0;
   GBuffer gbuffer_;
-  gl::Texture2D lit_, reflection_, color_, display_, linear_;
+  gl::Texture2D lit_, reflection_, color_, display_, linear_, debug_;
+  void render_backfaces();
   gl::Buffer frame_ubo_;
   gl::Program gbuffer_prog_, lighting_prog_, composite_prog_, display_prog_;
   CameraMatrices matrices_{};
+  int blend_ = 0;  // the last technique's composite blend
   Camera camera_{};
   int frame_index_ = 0;
   std::uint64_t scene_id_ = 0;

@@ -11,6 +11,8 @@ struct GBuffer {
   gl::Texture2D material;          // RGBA8UI: reflector id, reflectance*255, flags
   gl::Texture2D emission;          // RGBA16F: emitted radiance
   gl::Framebuffer fbo;
+  gl::Texture2D back_depth;        // D32F: nearest back faces, drawn only for techniques that ask
+  gl::Framebuffer back_fbo;
 };
 
 }  // namespace ssr

@@ -3,13 +3,13 @@
 // sample behind the depth buffer by less than the thickness. Optional depth interpolation
 // ([Val14], thesis fig. 8) places the hit between the last two samples.
 #include "shared/linear.h"
-#include "techniques/technique.h"
+#include "techniques/tracer.h"
 
 namespace ssr {
 namespace {
 
 using P = shared::LinearParams;
-const ParamDesc kTable[] = {
+const std::vector<ParamDesc> kTable = with_ray_options<P>({
     SSR_PARAM_INT(P, max_steps, 1, 8192, "steps", "Number of march iterations per ray."),
     SSR_PARAM_FLOAT(P, step_size, 0.001, 50.0, 0.01, "world units",
                     "Distance between two samples along the reflected ray."),
@@ -19,27 +19,12 @@ const ParamDesc kTable[] = {
                     "Rays stop after this distance from the reflecting point."),
     SSR_PARAM_BOOL(P, depth_interp,
                    "Refine the hit by linearly interpolating ray and buffer depths between the last two samples."),
-};
-
-class LinearTechnique final : public TechniqueWithParams<P> {
- public:
-  LinearTechnique() : TechniqueWithParams("linear", kTable) {}
-  void load(const gl::ShaderSource& src) override {
-    program_ = gl::Program::compute(src, "techniques/linear.comp");
-  }
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
-    gl::ScopedPass pass(in.timer, "linear");
-    bind_params();
-    glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    program_.dispatch_2d(in.width, in.height);
-  }
-
- private:
-  gl::Program program_;
-};
+});
 
 }  // namespace
 
-std::unique_ptr<Technique> make_linear_technique() { return std::make_unique<LinearTechnique>(); }
+std::unique_ptr<Technique> make_linear_technique() {
+  return std::make_unique<TracerTechnique<P>>("linear", kTable, "techniques/linear.comp");
+}
 
 }  // namespace ssr

@@ -43,8 +43,14 @@ class Technique {
   // (Re)builds GL programs from `src`. Throws RuntimeError with file:line on a compile error,
   // leaving the previous programs in place.
   virtual void load(const gl::ShaderSource& src) = 0;
-  // Writes `reflection` (same size as the frame). Called with the frame's inputs bound.
+  // Writes `reflection` (same size as the frame). Called with the frame's inputs bound, and
+  // the debug image (steps, hit share, distance) bound at IMG_OUT2.
   virtual void run(const TechniqueInputs& in, gl::Texture2D& reflection) = 0;
+
+  // What the renderer must provide or do around run().
+  virtual bool needs_backfaces() const { return false; }  // back-face depth at TEX_BACK_DEPTH
+  virtual bool writes_debug() const { return false; }     // else the debug image is cleared
+  virtual int composite_blend() const { return 0; }       // 0 standard, 1 Roberts (mix(lit, refl, a))
 };
 
 struct TechniqueInfo {

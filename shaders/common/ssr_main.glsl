@@ -1,0 +1,61 @@
+// The main() every screen-space tracer shares. Before including it, a tracer declares
+//   layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { XParams params; };
+// (with `RayOptions ray` as a member of XParams) and defines
+//   TraceResult trace_ray(ivec2 pixel, vec3 origin_vs, vec3 dir_vs, float jitter);
+// This file samples the reflection rays (GGX VNDF for rough pixels), averages the hits, applies
+// the shared fades and writes the reflection and debug images.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = TEX_LIT) uniform sampler2D lit_tex;
+layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
+layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;  // steps, hit share, distance
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+  GSample g = gbuffer_fetch(p);
+  if (!is_reflective(g)) {
+    imageStore(out_reflection, p, vec4(0.0));
+    imageStore(out_debug, p, vec4(0.0));
+    return;
+  }
+  RayOptions o = params.ray;
+  float rough = o.roughness >= 0.0 ? o.roughness : g.roughness;
+  vec3 v = -normalize(g.pos_vs);
+  bool mirror = rough < 0.01;
+  int n = mirror ? 1 : clamp(o.samples, 1, 16);
+  vec3 f0 = f0_of(g.albedo, g.metallic, g.reflectance);
+
+  vec3 radiance = vec3(0.0);
+  float weight = 0.0, steps = 0.0, hits = 0.0, dist = 0.0;
+  for (int s = 0; s < n; ++s) {
+    vec3 dir = reflect(-v, g.n_vs);
+    if (!mirror) {
+      vec3 l = sample_reflection(g.n_vs, v, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(o.seed)));
+      if (dot(l, g.n_vs) > 0.0) dir = l;  // under the horizon: fall back to the mirror ray
+    }
+    TraceResult t = trace_ray(p, g.pos_vs, normalize(dir), pixel_jitter(p, s, o.seed));
+    steps += t.steps;
+    if (!t.hit) continue;
+    float w = 1.0;
+    if (o.edge_fade != 0)
+      w *= clamp(1.0 - abs(t.uv.x - 0.5) - abs(t.uv.y - 0.5), 0.0, 1.0);
+    if (o.falloff_distance > 0.0)
+      w *= 1.0 - smoothstep(0.5 * o.falloff_distance, o.falloff_distance, t.distance);
+    if (o.blend == 1) {
+      // Roberts: beta = metallic^3 * -ray.z (no reflections towards the camera) * fades.
+      w *= g.metallic * g.metallic * g.metallic * clamp(-dir.z, 0.0, 1.0);
+      if (o.fresnel != 0) {
+        vec3 fr = fresnel_schlick(f0, dot(g.n_vs, v));
+        w *= max(fr.r, max(fr.g, fr.b));
+      }
+    }
+    radiance += textureLod(lit_tex, t.uv, 0.0).rgb * w;
+    weight += w;
+    hits += 1.0;
+    dist += t.distance;
+  }
+  // rgb: the weighted mean of what the hits saw; a: the share of the lobe they cover.
+  vec3 rgb = weight > 0.0 ? radiance / weight : vec3(0.0);
+  imageStore(out_reflection, p, vec4(rgb, clamp(weight / float(n), 0.0, 1.0)));
+  imageStore(out_debug, p, vec4(steps / float(n), hits / float(n), hits > 0.0 ? dist / hits : 0.0, 1.0));
+}

@@ -1,0 +1,48 @@
+// The shared tracer options (shaders/shared/ray_options.h), described once: every tracer's
+// table is its own parameters followed by these, under its own key prefix ("dda.samples", ...).
+#pragma once
+#include <cstddef>
+#include <initializer_list>
+#include <vector>
+
+#include "shared/ray_options.h"
+#include "techniques/params.h"
+
+namespace ssr {
+
+// The shared rows for a Params struct P whose member `ray` is a RayOptions. `with_blend` adds
+// the Roberts blend switch (only linear-binary offers it).
+template <class P>
+std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bool with_blend = false) {
+  using R = shared::RayOptions;
+  const std::size_t base = offsetof(P, ray);
+  auto at = [base](ParamDesc d, std::size_t field) {
+    d.offset = base + field;
+    return d;
+  };
+  std::vector<ParamDesc> t(own);
+  t.push_back(at({"samples", ParamType::Int, 0, 1, 16, 1, "rays",
+                  "GGX VNDF rays per rough pixel (mirror pixels trace one)."}, offsetof(R, samples)));
+  t.push_back(at({"roughness", ParamType::Float, 0, -1, 1, 0.01, "",
+                  "Override the G-buffer roughness everywhere (-1 keeps the material's)."}, offsetof(R, roughness)));
+  t.push_back(at({"backface_thickness", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Thickness from a back-face depth buffer: a hit lies between front and back faces."},
+                 offsetof(R, backface_thickness)));
+  t.push_back(at({"falloff_distance", ParamType::Float, 0, 0, 1000, 0.5, "world units",
+                  "Confidence fades to zero towards this ray length (0 = no falloff)."}, offsetof(R, falloff_distance)));
+  t.push_back(at({"edge_fade", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1) (Roberts)."},
+                 offsetof(R, edge_fade)));
+  t.push_back(at({"fresnel", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Roberts blend only: weight by Schlick Fresnel (the standard composite always applies it)."},
+                 offsetof(R, fresnel)));
+  if (with_blend)
+    t.push_back(at({"blend", ParamType::Choice, 0, 0, 1, 1, "",
+                    "standard: lit + specular * mix(env, refl, conf); roberts: mix(lit, refl, metallic^3 * -ray.z * fade).",
+                    {"standard", "roberts"}}, offsetof(R, blend)));
+  t.push_back(at({"seed", ParamType::Int, 0, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."},
+                 offsetof(R, seed)));
+  return t;
+}
+
+}  // namespace ssr
