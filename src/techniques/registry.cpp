@@ -6,6 +6,9 @@ namespace ssr {
 // One line per technique; each factory lives in its technique's file.
 std::unique_ptr<Technique> make_none_technique();
 std::unique_ptr<Technique> make_linear_technique();
+std::unique_ptr<Technique> make_linear_binary_technique();
+// (dda factory declaration)
+// (hiz factory declaration)
 std::unique_ptr<Technique> make_reference_technique();
 std::unique_ptr<Technique> make_planar_technique();
 
@@ -14,6 +17,10 @@ const std::vector<TechniqueInfo>& technique_registry() {
       {"none", "no reflections: the composite shows the environment only", make_none_technique},
       {"linear", "brute-force view-space linear march (Kim 2018, 2.3.1), optional depth interpolation",
        make_linear_technique},
+      {"linear-binary", "Roberts: view-space linear march + binary search refinement, edge fade, optional Roberts blend",
+       make_linear_binary_technique},
+      // (dda registry line)
+      // (hiz registry line)
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",

@@ -6,6 +6,7 @@
 
 #include "gl/context.h"
 #include "gl_test_env.h"
+#include "tracer_test_util.h"
 
 namespace ssr::test {
 gl::HeadlessContext* g_context = nullptr;
@@ -18,5 +19,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr, "GL tests on %s: %s\n", ctx->info().path.c_str(), ctx->info().renderer.c_str());
   ssr::gl::enable_debug_output(/*verbose=*/false);
   ssr::test::g_context = ctx.get();
-  return RUN_ALL_TESTS();
+  const int rc = RUN_ALL_TESTS();
+  ssr::test::clear_scored_frames();  // GL objects go before the context does
+  return rc;
 }

@@ -1,0 +1,28 @@
+// `linear-binary`: the Roberts paper. A view-space linear march of `linear_steps` samples up to
+// `max_distance`; at the first sample inside a surface (behind it by less than the thickness),
+// `binary_steps` of bisection between that sample and the previous one place the hit. Edge fade
+// and the paper's blend (metallic^3 * -ray.z * fade) come with the shared tracer options.
+#include "shared/linear_binary.h"
+#include "techniques/tracer.h"
+
+namespace ssr {
+namespace {
+
+using P = shared::LinearBinaryParams;
+const std::vector<ParamDesc> kTable = with_ray_options<P>(
+    {
+        SSR_PARAM_INT(P, linear_steps, 1, 8192, "steps", "Samples of the linear march between the origin and max_distance."),
+        SSR_PARAM_INT(P, binary_steps, 0, 64, "steps", "Bisection steps that refine the first hit."),
+        SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
+                        "A sample this far or less behind the depth buffer counts as inside the surface."),
+        SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units", "Length of the marched ray."),
+    },
+    /*with_blend=*/true);
+
+}  // namespace
+
+std::unique_ptr<Technique> make_linear_binary_technique() {
+  return std::make_unique<TracerTechnique<P>>("linear-binary", kTable, "techniques/linear_binary.comp");
+}
+
+}  // namespace ssr

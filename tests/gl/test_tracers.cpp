@@ -1,0 +1,82 @@
+// Every screen-space tracer against the reference (issue: the ray-marching family).
+// Per-technique sweeps and tolerances live in kTracers, next to the tests that use them.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "gl_test_env.h"
+#include "tracer_test_util.h"
+
+using namespace ssr;
+
+namespace {
+
+struct TracerCase {
+  const char* technique;
+  const char* steps_key;            // the parameter whose growth must lower the error
+  std::vector<int> steps;           // at least 4 values, increasing
+  std::vector<std::string> fixed;   // other assignments for the sweep
+};
+
+// Sizes are small for llvmpipe; gallery's mirror floor makes most pixels traceable.
+const std::vector<TracerCase> kTracers = {
+    {"linear", "linear.max_steps", {16, 32, 64, 128, 256}, {"linear.step_size=0.1"}},
+    {"linear-binary", "linear-binary.linear_steps", {25, 50, 100, 250, 500},
+     {"linear-binary.max_distance=30", "linear-binary.thickness=0.15", "linear-binary.edge_fade=false"}},
+};
+
+constexpr int kW = 192, kH = 108;
+
+}  // namespace
+
+// Error falls (PSNR on traceable pixels rises) as the step budget grows. Monotone up to a
+// tolerance of 0.05 dB: once every ray has converged, more steps change nothing.
+TEST(Tracers, ErrorFallsAsStepsGrow) {
+  for (const TracerCase& c : kTracers) {
+    double prev = -1e9;
+    for (int n : c.steps) {
+      std::vector<std::string> a = c.fixed;
+      a.push_back(std::string(c.steps_key) + "=" + std::to_string(n));
+      const auto s = test::score_technique("gallery", kW, kH, c.technique, a);
+      std::printf("%s %s=%d: psnr_traceable %.2f dB, coverage %.1f%%\n", c.technique, c.steps_key, n,
+                  s.error.psnr_traceable, s.error.coverage * 100);
+      EXPECT_EQ(s.error.nonfinite, 0u);
+      EXPECT_GE(s.error.psnr_traceable, prev - 0.05) << c.technique << " " << c.steps_key << "=" << n;
+      prev = std::max(prev, s.error.psnr_traceable);
+    }
+    // The sweep must actually matter: the largest budget beats the smallest by 3 dB or more.
+    std::vector<std::string> lo = c.fixed, hi = c.fixed;
+    lo.push_back(std::string(c.steps_key) + "=" + std::to_string(c.steps.front()));
+    hi.push_back(std::string(c.steps_key) + "=" + std::to_string(c.steps.back()));
+    EXPECT_GE(test::score_technique("gallery", kW, kH, c.technique, hi).error.psnr_traceable,
+              test::score_technique("gallery", kW, kH, c.technique, lo).error.psnr_traceable + 3.0)
+        << c.technique;
+  }
+  test::expect_no_gl_errors();
+}
+
+// Hard cases, for every tracer: finite output, confidence in [0,1], bounded error.
+// grazing: the `low` camera skims the mirror floor; corridor `back` looks back towards the
+// start so many rays head towards the camera and cross the near plane; corridor `default`
+// sends reflections off the screen edges.
+TEST(Tracers, HardCasesStayFiniteAndBounded) {
+  struct Hard {
+    const char* scene;
+    const char* camera;
+    double min_psnr;  // over all reflective pixels, vs the truth
+  };
+  const Hard cases[] = {{"gallery", "low", 8.0}, {"corridor", "back", 8.0}, {"corridor", "default", 8.0},
+                        {"cornell", "default", 8.0}};
+  for (const TracerCase& c : kTracers)
+    for (const Hard& h : cases)
+      for (const char* rough : {"-1", "1"}) {
+        std::vector<std::string> a = c.fixed;
+        a.push_back(std::string(c.technique) + ".roughness=" + rough);
+        a.push_back(std::string(c.technique) + ".samples=4");
+        const auto s = test::score_technique(h.scene, 128, 72, c.technique, a, h.camera);
+        EXPECT_EQ(s.error.nonfinite, 0u) << c.technique << " " << h.scene << "/" << h.camera;
+        EXPECT_GE(s.error.psnr, h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera
+                                            << " roughness " << rough;
+      }
+  test::expect_no_gl_errors();
+}

@@ -1,0 +1,51 @@
+#include "tracer_test_util.h"
+
+#include <map>
+#include <memory>
+#include <tuple>
+
+#include "core/cli_common.h"
+#include "eval/runner.h"
+#include "scene/builtin_scenes.h"
+
+namespace ssr::test {
+
+namespace {
+struct Cached {
+  Scene scene;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<Technique> reference;
+  std::unique_ptr<ScoredFrame> frame;
+  Camera camera;
+};
+std::map<std::tuple<std::string, std::string, int, int>, std::unique_ptr<Cached>>& cache() {
+  static std::map<std::tuple<std::string, std::string, int, int>, std::unique_ptr<Cached>> c;
+  return c;
+}
+}  // namespace
+
+TracerScore score_technique(const std::string& scene, int w, int h, const std::string& technique,
+                            const std::vector<std::string>& assignments, const std::string& camera) {
+  auto& slot = cache()[{scene, camera, w, h}];
+  if (!slot) {
+    slot = std::make_unique<Cached>();
+    slot->scene = make_builtin_scene(scene);
+    slot->camera = camera.empty() ? slot->scene.cameras.front() : slot->scene.camera(camera);
+    slot->renderer = std::make_unique<Renderer>(slot->scene, w, h);
+    slot->reference = create_technique("reference");
+    apply_assignments(*slot->reference, {"reference.samples=64"});
+    slot->reference->load(slot->renderer->shaders());
+    slot->frame = std::make_unique<ScoredFrame>(*slot->renderer, slot->camera, *slot->reference);
+  }
+  auto t = create_technique(technique);
+  apply_assignments(*t, assignments);
+  t->load(slot->renderer->shaders());
+  slot->renderer->render_inputs(slot->camera, nullptr);  // another test may have drawn since
+  TracerScore s;
+  s.error = slot->frame->score(*t).error;
+  return s;
+}
+
+void clear_scored_frames() { cache().clear(); }
+
+}  // namespace ssr::test

@@ -1,0 +1,24 @@
+// Scoring tracers against the reference in GL tests: one ScoredFrame per (scene, camera, size),
+// cached for the whole test binary (the reference is the slow part) and freed before the GL
+// context goes (gl_test_main.cpp calls clear_scored_frames()).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "eval/metrics.h"
+
+namespace ssr::test {
+
+struct TracerScore {
+  ErrorMetrics error;      // vs the reference (and the screen-space ideal on traceable pixels)
+  double technique_ms = 0; // not used for asserts: timings never are
+};
+
+// Runs `technique` with `assignments` ("technique.key=value") on the scene's camera (default:
+// its first) at w x h and scores it. The reference uses 64 samples for rough pixels.
+TracerScore score_technique(const std::string& scene, int w, int h, const std::string& technique,
+                            const std::vector<std::string>& assignments, const std::string& camera = "");
+
+void clear_scored_frames();
+
+}  // namespace ssr::test
