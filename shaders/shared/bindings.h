@@ -23,10 +23,15 @@
 #define TEX_NORMAL_MAP 9        // material normal map (G-buffer draw)
 #define TEX_BACK_DEPTH 13       // D32F depth of the nearest back faces (techniques that ask)
 #define TEX_DEBUG 14            // RGBA16F tracer debug: steps, hit share, hit distance
+#define TEX_GLASS_DEPTH 15      // D32F nearest transparent surface (else the opaque depth)
+#define TEX_GLASS_SURFACE 16    // RGBA16F view-space normal, ior (w = 0: no transparent surface)
+#define TEX_GLASS_TINT 17       // RGBA8 transmission tint
+#define TEX_REFRACTION 18       // RGBA16F technique refraction: radiance, confidence
 
 // Images (image units)
 #define IMG_OUT 0
 #define IMG_OUT2 1
+#define IMG_REFRACTION 2  // techniques write the refracted radiance of transparent pixels here
 
 // G-buffer material flags (TEX_MATERIAL.z)
 #define MATERIAL_FLAG_REFLECTIVE 1u

@@ -24,6 +24,10 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   rtcSetSceneBuildQuality(impl_->rtc, RTC_BUILD_QUALITY_HIGH);
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
+    impl_->uv_density.emplace_back();
+    // Transparent meshes are not in the opaque G-buffer either: the reflections the ground
+    // truth traces see the same opaque world the screen-space tracers do.
+    if (scene.materials[static_cast<std::size_t>(mesh.material)].transparent) continue;
     RTCGeometry geom = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(
         geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
@@ -46,7 +50,7 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
       const float uv_area = 0.5f * std::abs(e1.x * e2.y - e1.y * e2.x);
       density[t] = world_area > 0 ? std::sqrt(uv_area / world_area) : 0.0f;
     }
-    impl_->uv_density.push_back(std::move(density));
+    impl_->uv_density.back() = std::move(density);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->rtc, geom, static_cast<unsigned>(m));
     rtcReleaseGeometry(geom);

@@ -22,7 +22,9 @@ struct RayHit {
 
 class EmbreeScene {
  public:
-  explicit EmbreeScene(const Scene& scene);  // throws RuntimeError when Embree fails
+  // Opaque meshes only (transparent ones are left out, as in the G-buffer). Throws RuntimeError
+  // when Embree fails.
+  explicit EmbreeScene(const Scene& scene);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;

@@ -48,6 +48,8 @@ GpuScene::GpuScene(const Scene& scene) : vao_("scene vao") {
     u.ids = glm::ivec4(m.reflector, mat.albedo_texture >= 0, mat.normal_texture >= 0,
                        mat.transparent ? 1 : 0);
     d.ubo = gl::make_buffer("draw " + m.name, sizeof u, &u, 0);
+    d.transparent = mat.transparent;
+    has_transparent_ |= mat.transparent;
     draws_.push_back(std::move(d));
   }
   for (const Image& im : scene.images) {
@@ -96,9 +98,10 @@ GpuScene::GpuScene(const Scene& scene) : vao_("scene vao") {
                             lights.data(), 0);
 }
 
-void GpuScene::draw_gbuffer() const {
+void GpuScene::draw(bool transparent) const {
   glBindVertexArray(vao_.id());
   for (const Draw& d : draws_) {
+    if (d.transparent != transparent) continue;
     glBindBufferBase(GL_UNIFORM_BUFFER, UBO_DRAW, d.ubo.id());
     glBindTextureUnit(TEX_ALBEDO_MAP, d.albedo_tex);
     glBindTextureUnit(TEX_NORMAL_MAP, d.normal_tex);

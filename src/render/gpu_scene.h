@@ -10,8 +10,11 @@ namespace ssr {
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
-  // Draws every mesh into the bound framebuffer with the bound G-buffer program.
-  void draw_gbuffer() const;
+  // Draws the opaque (or the transparent) meshes into the bound framebuffer with the bound
+  // program. Transparent meshes are kept out of the opaque G-buffer (2012 blog): what lies
+  // behind them must stay visible to the tracers.
+  void draw(bool transparent) const;
+  bool has_transparent() const { return has_transparent_; }
   GLuint lights_ssbo() const { return lights_.id(); }
   int light_count() const { return light_count_; }
   // The albedo (sRGB, mip-mapped) texture of scene image i.
@@ -24,6 +27,7 @@ class GpuScene {
     GLint base_vertex;
     GLuint albedo_tex, normal_tex;  // 0 = none
     gl::Buffer ubo;                 // DrawUniforms
+    bool transparent;
   };
   gl::VertexArray vao_;
   gl::Buffer vbo_, ibo_, lights_;
@@ -31,6 +35,7 @@ class GpuScene {
   std::vector<gl::Texture2D> normal_textures_; // one per scene image, linear (normal maps)
   std::vector<Draw> draws_;
   int light_count_ = 0;
+  bool has_transparent_ = false;
 };
 
 }  // namespace ssr

@@ -44,10 +44,12 @@ Renderer::~Renderer() = default;
 void Renderer::reload_shaders() {
   // Build all first, then swap: a compile error leaves the running programs untouched.
   auto gbuffer = gl::Program::graphics(shaders_, "render/gbuffer.vert", "render/gbuffer.frag");
+  auto glass = gl::Program::graphics(shaders_, "render/gbuffer.vert", "render/glass.frag");
   auto lighting = gl::Program::compute(shaders_, "render/lighting.comp");
   auto composite = gl::Program::compute(shaders_, "render/composite.comp");
   auto display = gl::Program::compute(shaders_, "render/display.comp");
   gbuffer_prog_ = std::move(gbuffer);
+  glass_prog_ = std::move(glass);
   lighting_prog_ = std::move(lighting);
   composite_prog_ = std::move(composite);
   display_prog_ = std::move(display);
@@ -85,6 +87,14 @@ void Renderer::resize(int width, int height) {
   gbuffer_.back_fbo = gl::Framebuffer("gbuffer back faces");
   glNamedFramebufferTexture(gbuffer_.back_fbo.id(), GL_DEPTH_ATTACHMENT, gbuffer_.back_depth.id(), 0);
   glNamedFramebufferDrawBuffer(gbuffer_.back_fbo.id(), GL_NONE);
+  gbuffer_.glass_depth = gl::Texture2D("glass depth", GL_DEPTH_COMPONENT32F, width, height);
+  gbuffer_.glass_surface = gl::Texture2D("glass normal+ior", GL_RGBA16F, width, height);
+  gbuffer_.glass_tint = gl::Texture2D("glass tint", GL_RGBA8, width, height);
+  gbuffer_.glass_fbo = gl::Framebuffer("glass");
+  glNamedFramebufferTexture(gbuffer_.glass_fbo.id(), GL_DEPTH_ATTACHMENT, gbuffer_.glass_depth.id(), 0);
+  glNamedFramebufferTexture(gbuffer_.glass_fbo.id(), GL_COLOR_ATTACHMENT0, gbuffer_.glass_surface.id(), 0);
+  glNamedFramebufferTexture(gbuffer_.glass_fbo.id(), GL_COLOR_ATTACHMENT1, gbuffer_.glass_tint.id(), 0);
+  glNamedFramebufferDrawBuffers(gbuffer_.glass_fbo.id(), 2, bufs);
   lit_ = gl::Texture2D("lit", GL_RGBA16F, width, height);
   // Techniques fetch the lit colour at fractional hit positions: bilinear.
   glTextureParameteri(lit_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -94,6 +104,7 @@ void Renderer::resize(int width, int height) {
   display_ = gl::Texture2D("display", GL_RGBA8, width, height);
   linear_ = gl::Texture2D("display linear", GL_RGBA16F, width, height);
   debug_ = gl::Texture2D("technique debug", GL_RGBA16F, width, height);
+  refraction_ = gl::Texture2D("refraction", GL_RGBA16F, width, height);
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw RuntimeError("the GL has not enough memory for " + std::to_string(width) + "x" +
                        std::to_string(height) + " targets.");
@@ -112,6 +123,10 @@ void Renderer::bind_frame_inputs() const {
   glBindTextureUnit(TEX_COLOR, color_.id());
   glBindTextureUnit(TEX_BACK_DEPTH, gbuffer_.back_depth.id());
   glBindTextureUnit(TEX_DEBUG, debug_.id());
+  glBindTextureUnit(TEX_GLASS_DEPTH, gbuffer_.glass_depth.id());
+  glBindTextureUnit(TEX_GLASS_SURFACE, gbuffer_.glass_surface.id());
+  glBindTextureUnit(TEX_GLASS_TINT, gbuffer_.glass_tint.id());
+  glBindTextureUnit(TEX_REFRACTION, refraction_.id());
 }
 
 void Renderer::render_backfaces() {
@@ -126,7 +141,7 @@ void Renderer::render_backfaces() {
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
   glUseProgram(gbuffer_prog_.id());
-  gpu_scene_->draw_gbuffer();
+  gpu_scene_->draw(/*transparent=*/false);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -177,7 +192,18 @@ void Renderer::render_inputs(const Camera& camera, gl::PassTimer* timer) {
     glDisable(GL_CULL_FACE);  // two-sided: scenes may be seen from inside
     glDisable(GL_BLEND);
     glUseProgram(gbuffer_prog_.id());
-    gpu_scene_->draw_gbuffer();
+    gpu_scene_->draw(/*transparent=*/false);
+    // Transparent surfaces: their own small G-buffer, depth-tested against the opaque depth
+    // (copied in first) so only glass in front of opaque geometry lands there.
+    const float none[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(gbuffer_.glass_fbo.id(), GL_COLOR, 0, none);
+    if (gpu_scene_->has_transparent()) {
+      glCopyImageSubData(gbuffer_.depth.id(), GL_TEXTURE_2D, 0, 0, 0, 0, gbuffer_.glass_depth.id(),
+                         GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_, 1);
+      glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_.glass_fbo.id());
+      glUseProgram(glass_prog_.id());
+      gpu_scene_->draw(/*transparent=*/true);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CLIP_DISTANCE0);
@@ -197,13 +223,15 @@ void Renderer::run_technique(Technique& technique, gl::PassTimer* timer) {
     gl::ScopedPass pass(timer, "backfaces");
     render_backfaces();
   }
-  if (!technique.writes_debug()) {
+  if (!technique.writes_debug()) {  // tracers write debug and refraction; others leave them blank
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(debug_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    glClearTexImage(refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   }
   blend_ = technique.composite_blend();
   bind_frame_inputs();
   glBindImageTexture(IMG_OUT2, debug_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(IMG_REFRACTION, refraction_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   TechniqueInputs in{*this, gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer};
   technique.run(in, reflection_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |

@@ -69,6 +69,7 @@ class Renderer {
   const gl::Texture2D& lit() const { return lit_; }
   const gl::Texture2D& reflection() const { return reflection_; }
   const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: steps, hit share, distance
+  const gl::Texture2D& refraction() const { return refraction_; }  // RGBA16F: radiance, confidence
   const gl::Texture2D& color() const { return color_; }
   const gl::Texture2D& display() const { return display_; }  // RGBA8 (sRGB values)
   const CameraMatrices& matrices() const { return matrices_; }
@@ -89,10 +90,10 @@ class Renderer {
   std::unique_ptr<GpuScene> gpu_scene_;
   int width_ = 0, height_ = 0;
   GBuffer gbuffer_;
-  gl::Texture2D lit_, reflection_, color_, display_, linear_, debug_;
+  gl::Texture2D lit_, reflection_, color_, display_, linear_, debug_, refraction_;
   void render_backfaces();
   gl::Buffer frame_ubo_;
-  gl::Program gbuffer_prog_, lighting_prog_, composite_prog_, display_prog_;
+  gl::Program gbuffer_prog_, glass_prog_, lighting_prog_, composite_prog_, display_prog_;
   CameraMatrices matrices_{};
   int blend_ = 0;  // the last technique's composite blend
   Camera camera_{};

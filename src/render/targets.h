@@ -13,6 +13,11 @@ struct GBuffer {
   gl::Framebuffer fbo;
   gl::Texture2D back_depth;        // D32F: nearest back faces, drawn only for techniques that ask
   gl::Framebuffer back_fbo;
+  // Transparent surfaces in front of the opaque ones (only drawn when the scene has some).
+  gl::Texture2D glass_depth;       // D32F: opaque depth, then the nearest transparent surface
+  gl::Texture2D glass_surface;     // RGBA16F: view-space normal, ior (w = 0: no glass here)
+  gl::Texture2D glass_tint;        // RGBA8: linear albedo (transmission tint)
+  gl::Framebuffer glass_fbo;
 };
 
 }  // namespace ssr

@@ -368,6 +368,44 @@ Scene corridor() {
   return b.s;
 }
 
+// ---- glass ---------------------------------------------------------------------------------------
+// Refraction (2012 blog): a glass sphere (ior 1.5) and a glass slab (ior 1.33) stand in front of a
+// brick wall and coloured boxes on a matte floor; the camera looks through both.
+Scene glass() {
+  Builder b;
+  b.s.name = "glass";
+  const int brick_img = b.image(bricks(256, 8, 4, {0.72f, 0.42f, 0.30f}, {0.80f, 0.78f, 0.74f}, 7u));
+  Material wall = mat("brick_wall", glm::vec3(1.0f), 0.85f);
+  wall.albedo_texture = brick_img;
+  const int wall_mat = b.material(wall);
+  Mesh back = meshgen::plane({16.0f, 6.0f}, 1.0f);
+  scale_uv(back, {8.0f, 3.0f});
+  b.mesh(std::move(back), "back_wall", wall_mat, translate({0, 3.0f, -4.0f}) * rotate_x(90.0f));
+  b.mesh(meshgen::plane({16.0f, 12.0f}), "floor", b.material(mat("floor", {0.55f, 0.55f, 0.52f}, 0.7f)),
+         translate({0, 0, 1.0f}));
+  const glm::vec3 colors[] = {{0.8f, 0.15f, 0.1f}, {0.1f, 0.6f, 0.2f}, {0.15f, 0.3f, 0.85f}, {0.9f, 0.75f, 0.1f}};
+  for (int i = 0; i < 4; ++i)
+    b.mesh(meshgen::box({0.8f, 1.2f, 0.8f}), "box" + std::to_string(i),
+           b.material(mat("box" + std::to_string(i), colors[i], 0.6f)),
+           translate({-3.0f + 2.0f * static_cast<float>(i), 0.6f, -2.5f}));
+  Material glass_sphere = mat("glass_sphere", {0.95f, 0.97f, 1.0f}, 0.0f);
+  glass_sphere.transparent = true;
+  glass_sphere.ior = 1.5f;
+  b.mesh(meshgen::sphere(0.9f, 48, 24), "glass_sphere", b.material(glass_sphere), translate({-1.2f, 0.9f, 0.5f}));
+  Material water = mat("glass_slab", {0.85f, 0.95f, 1.0f}, 0.0f);
+  water.transparent = true;
+  water.ior = 1.33f;
+  b.mesh(meshgen::box({1.6f, 1.8f, 0.3f}), "glass_slab", b.material(water),
+         translate({1.4f, 0.9f, 0.6f}) * rotate_y(25.0f));
+  b.light({0.0f, 4.0f, 3.0f}, {1.0f, 0.95f, 0.9f}, 30.0f, 20.0f);
+  b.light({-4.0f, 2.5f, 1.0f}, {0.6f, 0.7f, 1.0f}, 10.0f, 12.0f);
+  b.camera("default", {0.0f, 1.5f, 5.5f}, {0.0f, 1.0f, 0.0f});
+  b.camera("close", {-1.0f, 1.2f, 2.8f}, {-1.2f, 0.9f, 0.0f});
+  b.s.environment.type = Environment::Type::Sky;
+  b.s.ambient = 0.35f;
+  return b.s;
+}
+
 struct Entry {
   BuiltinSceneInfo info;
   Scene (*make)();
@@ -387,6 +425,8 @@ const std::vector<Entry>& entries() {
         "40 m corridor with a near-mirror floor (planar reflector, roughness 0.05), pillars and "
         "coloured panels"},
        &corridor},
+      {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
+       &glass},
   };
   return list;
 }

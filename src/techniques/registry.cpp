@@ -7,8 +7,8 @@ namespace ssr {
 std::unique_ptr<Technique> make_none_technique();
 std::unique_ptr<Technique> make_linear_technique();
 std::unique_ptr<Technique> make_linear_binary_technique();
-// (dda factory declaration)
-// (hiz factory declaration)
+std::unique_ptr<Technique> make_dda_technique();
+std::unique_ptr<Technique> make_hiz_technique();
 std::unique_ptr<Technique> make_reference_technique();
 std::unique_ptr<Technique> make_planar_technique();
 
@@ -19,8 +19,8 @@ const std::vector<TechniqueInfo>& technique_registry() {
        make_linear_technique},
       {"linear-binary", "Roberts: view-space linear march + binary search refinement, edge fade, optional Roberts blend",
        make_linear_binary_technique},
-      // (dda registry line)
-      // (hiz registry line)
+      {"dda", "McGuire & Mara: perspective-correct per-pixel screen-space DDA with stride, jitter and refinement", make_dda_technique},
+      {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",

@@ -23,6 +23,9 @@ const std::vector<TracerCase> kTracers = {
     {"linear", "linear.max_steps", {16, 32, 64, 128, 256}, {"linear.step_size=0.1"}},
     {"linear-binary", "linear-binary.linear_steps", {25, 50, 100, 250, 500},
      {"linear-binary.max_distance=30", "linear-binary.thickness=0.15", "linear-binary.edge_fade=false"}},
+    // stride 2 reaches across the 192 px frame by 128 steps; refinement keeps pixel precision.
+    {"dda", "dda.max_steps", {8, 16, 32, 64, 128}, {"dda.stride=2"}},
+    {"hiz", "hiz.max_iterations", {8, 16, 32, 64, 128}, {"hiz.max_distance=30"}},
 };
 
 constexpr int kW = 192, kH = 108;

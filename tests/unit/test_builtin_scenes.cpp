@@ -88,12 +88,13 @@ void check_reflector_meshes(const Scene& s) {
   }
 }
 
-TEST(BuiltinScenes, ListsThreeScenesWithGalleryFirst) {
+TEST(BuiltinScenes, ListsTheScenesWithGalleryFirst) {
   const auto& list = ssr::builtin_scenes();
-  ASSERT_EQ(list.size(), 3u);
+  ASSERT_EQ(list.size(), 4u);
   EXPECT_EQ(list[0].name, "gallery");
   EXPECT_EQ(list[1].name, "cornell");
   EXPECT_EQ(list[2].name, "corridor");
+  EXPECT_EQ(list[3].name, "glass");
   for (const auto& info : list) EXPECT_FALSE(info.description.empty()) << info.name;
 }
 

@@ -1,0 +1,21 @@
+// Parameters of `hiz` (Uludag, GPU Pro 5): a screen-space trace over a max-depth pyramid
+// (reversed-Z: max = closest), climbing while the ray stays in front of a cell's closest depth
+// and descending where it may pass behind it, with an iteration cap.
+#pragma once
+#include "shared/ray_options.h"
+
+// The depth pyramid's texture unit. bindings.h is the home of named slots; 11 is free there.
+#define TEX_HIZ 11
+
+SSR_SHARED_BEGIN
+
+struct HizParams {
+  RayOptions ray SSR_DEFAULT((RayOptions{}));
+  int max_iterations SSR_DEFAULT(128);  // cap on pyramid cell visits per ray
+  int start_level SSR_DEFAULT(0);       // pyramid level of the first step
+  int max_level SSR_DEFAULT(10);        // coarsest level the trace climbs to
+  float thickness SSR_DEFAULT(0.15f);   // how far behind the depth buffer still counts (world units)
+  float max_distance SSR_DEFAULT(50.0f);  // the ray's length (world units)
+};
+
+SSR_SHARED_END

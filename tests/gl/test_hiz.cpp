@@ -1,0 +1,85 @@
+// `hiz`: the depth pyramid against a CPU max-reduction (odd sizes), and the trace's error
+// against linear-binary's brute-force march.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstring>
+#include <random>
+
+#include "gl_test_env.h"
+#include "techniques/hiz_pyramid.h"
+#include "tracer_test_util.h"
+
+using namespace ssr;
+
+namespace {
+
+// The reference reduction: texel (x, y) of the next level is the max over source texels
+// 2x..2x+1 (to the source's last one for the last texel), the same for y.
+std::vector<float> cpu_reduce(const std::vector<float>& src, int sw, int sh, int w, int h) {
+  std::vector<float> out(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int x1 = x == w - 1 ? sw - 1 : 2 * x + 1, y1 = y == h - 1 ? sh - 1 : 2 * y + 1;
+      float m = src[static_cast<std::size_t>(2 * y) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(2 * x)];
+      for (int v = 2 * y; v <= std::min(y1, sh - 1); ++v)
+        for (int u = 2 * x; u <= std::min(x1, sw - 1); ++u)
+          m = std::max(m, src[static_cast<std::size_t>(v) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(u)]);
+      out[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] = m;
+    }
+  return out;
+}
+
+}  // namespace
+
+// Every level of a 1921x1081 pyramid of random depths, bit for bit: odd sizes at most levels
+// (1081 -> 540 -> 270 -> 135 -> 67 -> 33 -> 16 ...), so the 3-texel footprints are exercised.
+TEST(Hiz, PyramidMatchesCpuMaxReduction) {
+  const int w = 1921, h = 1081;
+  std::vector<float> depth(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (float& d : depth) d = u(rng) < 0.1f ? 0.0f : u(rng);  // some background (0)
+  // The largest depths on the last row and column: lost if the extra row/column were skipped.
+  depth[static_cast<std::size_t>(h - 1) * w + 5] = 1.0f;
+  depth[static_cast<std::size_t>(7) * w + (w - 1)] = 1.0f;
+  gl::Texture2D tex("hiz test depth", GL_DEPTH_COMPONENT32F, w, h);
+  glTextureSubImage2D(tex.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+
+  HizPyramid pyramid;
+  pyramid.load(gl::ShaderSource());
+  pyramid.build(tex);
+  glFinish();
+  const auto sizes = hiz_level_sizes(w, h);
+  ASSERT_EQ(pyramid.texture().levels(), static_cast<int>(sizes.size()));
+  std::vector<float> want = depth;
+  int sw = w, sh = h;
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    const auto [lw, lh] = sizes[k];
+    if (k > 0) want = cpu_reduce(want, sw, sh, lw, lh);
+    sw = lw;
+    sh = lh;
+    std::vector<float> got(want.size());
+    glGetTextureImage(pyramid.texture().id(), static_cast<GLint>(k), GL_RED, GL_FLOAT,
+                      static_cast<GLsizei>(got.size() * sizeof(float)), got.data());
+    std::size_t bad = 0;
+    for (std::size_t i = 0; i < got.size(); ++i) bad += std::memcmp(&got[i], &want[i], sizeof(float)) != 0;
+    EXPECT_EQ(bad, 0u) << "level " << k << " (" << lw << "x" << lh << ")";
+  }
+  EXPECT_EQ(want[0], 1.0f);
+  test::expect_no_gl_errors();
+}
+
+// The hierarchical trace finds what a dense march finds: hiz at its defaults (iteration cap,
+// 0.15 thickness) is within 0.5 dB of linear-binary with 500 steps on the traceable pixels.
+TEST(Hiz, MatchesLinearBinaryWith500Steps) {
+  const auto lb = test::score_technique("gallery", 192, 108, "linear-binary",
+                                        {"linear-binary.linear_steps=500", "linear-binary.max_distance=30",
+                                         "linear-binary.thickness=0.15", "linear-binary.edge_fade=false"});
+  const auto hiz = test::score_technique("gallery", 192, 108, "hiz", {"hiz.max_distance=30"});
+  std::printf("gallery 192x108 psnr_traceable: hiz %.2f dB (coverage %.1f%%), linear-binary/500 %.2f dB (coverage %.1f%%)\n",
+              hiz.error.psnr_traceable, hiz.error.coverage * 100, lb.error.psnr_traceable, lb.error.coverage * 100);
+  EXPECT_EQ(hiz.error.nonfinite, 0u);
+  EXPECT_GE(hiz.error.psnr_traceable, lb.error.psnr_traceable - 0.5);
+  test::expect_no_gl_errors();
+}
