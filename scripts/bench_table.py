@@ -5,6 +5,10 @@
 
 One table per (scene, size): technique, median/min/max ms, time over the floor pass, PSNR,
 PSNR traceable, coverage, non-finite count. Device, clock and revision come from each file.
+Then, per (scene, size), "speed at equal error": the error linear-binary reaches at its largest
+swept budget is the target; for each technique, the fastest variant whose PSNR traceable is
+within 0.25 dB of it (or better), and how many times faster than linear-binary's fastest such
+variant it is.
 """
 import json
 import sys
@@ -36,7 +40,36 @@ def main(paths):
             print()
 
 
+def equal_error(paths, baseline="linear-binary", slack=0.25):
+    print("| scene | size | target PSNR traceable dB | technique | fastest variant at target | ms | speed-up vs "
+          f"{baseline} |")
+    print("|---|---|---:|---|---|---:|---:|")
+    for path in paths:
+        for run in json.load(open(path))["runs"]:
+            base = [r for r in run["results"] if r["technique"] == baseline and not r.get("preset")]
+            if not base:
+                continue
+            # The target: what the baseline reaches with its largest step budget.
+            steps_key = baseline + ".linear_steps"
+            target = max(base, key=lambda r: r["params"].get(steps_key, 0))["error"]["psnr_traceable"]
+            def fastest(rs):
+                ok = [r for r in rs if r["error"]["psnr_traceable"] >= target - slack]
+                return min(ok, key=lambda r: r["time_ms"]["median"]) if ok else None
+            ref = fastest(base)
+            w, h = run["size"]
+            for tech in sorted({r["technique"] for r in run["results"]} - {"none"}):
+                best = fastest([r for r in run["results"] if r["technique"] == tech and not r.get("preset")])
+                if best is None:
+                    print(f"| {run['scene']} | {w}x{h} | {fmt(target)} | {tech} | does not reach it | | |")
+                    continue
+                ratio = ref["time_ms"]["median"] / best["time_ms"]["median"]
+                print(f"| {run['scene']} | {w}x{h} | {fmt(target)} | {tech} | {best.get('label', tech)} "
+                      f"| {fmt(best['time_ms']['median'], 3)} | {fmt(ratio)}x |")
+    print()
+
+
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit("usage: bench_table.py bench.json [more.json ...]")
     main(sys.argv[1:])
+    equal_error(sys.argv[1:])

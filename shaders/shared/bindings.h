@@ -21,6 +21,7 @@
 #define TEX_EMISSION 7          // RGBA16F emitted radiance (G-buffer)
 #define TEX_ALBEDO_MAP 8        // material albedo texture (G-buffer draw)
 #define TEX_NORMAL_MAP 9        // material normal map (G-buffer draw)
+#define TEX_HIZ 11              // R32F Hi-Z pyramid, max (= closest, reversed-Z) depth per cell
 #define TEX_BACK_DEPTH 13       // D32F depth of the nearest back faces (techniques that ask)
 #define TEX_DEBUG 14            // RGBA16F tracer debug: steps, hit share, hit distance
 #define TEX_GLASS_DEPTH 15      // D32F nearest transparent surface (else the opaque depth)

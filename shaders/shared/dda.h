@@ -13,7 +13,7 @@ struct DdaParams {
   float thickness SSR_DEFAULT(0.15f);     // how far behind the depth buffer still counts as a hit (world units)
   float max_distance SSR_DEFAULT(50.0f);  // longest reflection ray (world units)
   int refine_steps SSR_DEFAULT(4);        // bisection steps inside the last stride (stride > 1 only)
-  int jitter SSR_DEFAULT(0);              // 1: start each ray jitter * stride pixels further
+  int jitter SSR_DEFAULT(0);              // 1: shift each pixel's step grid by a random fraction of the stride
   int pad0, pad1;                         // std140 blocks are whole vec4s: keep sizeof a multiple of 16
 };
 

@@ -5,7 +5,6 @@
 #include "shared/ray_options.h"
 
 // The depth pyramid's texture unit. bindings.h is the home of named slots; 11 is free there.
-#define TEX_HIZ 11
 
 SSR_SHARED_BEGIN
 

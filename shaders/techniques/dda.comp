@@ -23,18 +23,30 @@ ivec2 ray_pixel(ScreenRay r, float s) { return ivec2(floor(r.p0 + r.dp * s)); }
 
 const int FRONT = 0, INSIDE = 1, BEHIND = 2;
 
-// Where the stretch [s - half, s + half] of the ray lies relative to the surface seen at s's
-// pixel. The paper's z-range test: the stretch's view-z interval, not one point, is compared
-// with the depth buffer, so a ray crossing a lot of depth inside one pixel (or one stride)
-// cannot jump over a thin surface. The interval overlaps the surface's slab exactly when its
-// point nearest to the front surface from behind, min(z_near, front), is inside_surface() --
-// which keeps the shared back-face thickness option working.
-int classify(ScreenRay r, float s, float half_len, bool backfaces, out vec2 uv) {
-  uv = (vec2(ray_pixel(r, s)) + 0.5) * frame.viewport.zw;
+// Where the stretch [lo, hi] of the ray lies relative to the surface seen at its middle's pixel.
+// The paper's z-range test: the stretch's view-z interval, not one point, is compared with the
+// depth buffer, so a ray crossing a lot of depth inside one pixel (a reflection heading away
+// from the camera: metres per pixel) cannot jump over a thin slab. The interval overlaps the
+// slab exactly when its point nearest the front surface from behind, min(z_near, front), is
+// inside_surface() -- which keeps the shared back-face thickness option working.
+int classify(ScreenRay r, float lo, float hi, bool backfaces, out vec2 uv) {
+  uv = (vec2(ray_pixel(r, 0.5 * (lo + hi))) + 0.5) * frame.viewport.zw;
   float front = scene_view_z(uv);  // -1e30 on the background: always FRONT there
-  float za = ray_z(r, max(s - half_len, 0.0)), zb = ray_z(r, min(s + half_len, r.len));
+  float za = ray_z(r, lo), zb = ray_z(r, hi);
   if (min(za, zb) > front) return FRONT;
   return inside_surface(uv, min(max(za, zb), front), params.thickness, backfaces) ? INSIDE : BEHIND;
+}
+
+// Is the surface seen at uv the origin's own surface, continued along its tangent plane? Near
+// the origin, per-pixel depth quantisation makes a ray leaving a surface look "inside" that
+// surface's neighbouring pixels; a surface in front of the tangent plane (a wall rising from a
+// floor) is another surface, hittable at once. Beyond the tangent plane (convex) counts as own.
+bool origin_surface(vec2 uv, vec3 origin, vec3 n) {
+  vec3 d = view_position(uv, 1.0);  // a point on the pixel's view ray (reversed-Z: the near plane)
+  float nd = dot(n, d);
+  if (nd >= -1e-6) return false;    // the plane is not seen through this pixel
+  float plane_z = dot(n, origin) / nd * d.z;
+  return scene_view_z(uv) <= plane_z + 1e-3 * abs(plane_z);
 }
 
 bool on_screen(ivec2 px) { return all(greaterThanEqual(px, ivec2(0))) && all(lessThan(px, ivec2(frame.viewport.xy))); }
@@ -51,8 +63,9 @@ TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   float k0 = 1.0 / h0.w, k1 = 1.0 / h1.w;
   vec2 p0 = (h0.xy * k0 * 0.5 + 0.5) * frame.viewport.xy;
   vec2 p1 = (h1.xy * k1 * 0.5 + 0.5) * frame.viewport.xy;
-  // A ray along the view ray projects to (almost) a point: lengthen it to 0.1 px as the paper
-  // does, so the step never divides by zero. It then ends before its first step: a miss.
+  // A ray along the view ray projects to (almost) a point: nudge its end by 0.01 px per axis
+  // as the paper does, so nothing divides by zero. It then ends inside the origin's pixel,
+  // before the first step: a miss.
   vec2 delta = p1 - p0;
   if (dot(delta, delta) < 1e-4) delta += vec2(0.01);
   float major = max(max(abs(delta.x), abs(delta.y)), 1e-4);
@@ -68,37 +81,51 @@ TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
 
   bool backfaces = params.ray.backface_thickness != 0;
   float stride = max(params.stride, 1.0);
-  // The first step leaves the origin's pixel; jitter shifts all steps by up to one stride so
-  // neighbouring pixels sample different depths (banding becomes noise).
-  float first = 1.0 + (params.jitter != 0 ? jitter * stride : 0.0);
-  float s_prev = 0.0, steps = 0.0;
-  // A hit needs the ray to have been wholly in front of the visible surface at an earlier step:
-  // near its origin the ray can look "inside" its own surface (per-pixel depth quantisation).
-  bool armed = false;
-  for (int i = 0; i < params.max_steps; ++i) {
-    float s = min(first + stride * float(i), r.len);  // the last step lands on the ray's end
-    if (s <= s_prev) break;
-    if (!on_screen(ray_pixel(r, s))) return trace_miss(steps);
+  // Each step covers a stretch [lo, hi] of the ray and tests the pixel at its middle: stretches
+  // tile the ray from where it leaves the origin's pixel (s = 0.5), so no crossing falls between
+  // two steps. Jitter shortens the first stretch to (1 - jitter) * stride, shifting the grid of
+  // all later ones per pixel (banding becomes noise) without skipping the ray's start, where the
+  // paper's offset start would lose contact reflections.
+  float lo = 0.5;
+  float hi = lo + stride * (params.jitter != 0 ? 1.0 - jitter : 1.0);
+  float steps = 0.0;
+  // A hit needs the ray to have been wholly in front of the visible surface at an earlier step,
+  // or a surface that is not the origin's own (see origin_surface). A ray that does not start
+  // on the depth buffer's surface (refraction: on glass in front of it) cannot hit itself.
+  float own_z = scene_view_z(pixel_to_uv(pixel));
+  bool armed = origin.z > own_z + 1e-4 * abs(own_z);
+  vec3 n = texelFetch(g_normal_roughness, pixel, 0).xyz;
+  n = dot(n, n) > 1e-8 ? normalize(n) : vec3(0.0, 0.0, 1.0);
+  int prev = FRONT;  // the ray starts on the surface
+  for (int i = 0; i < params.max_steps && lo < r.len; ++i, lo = hi, hi += stride) {
+    hi = min(hi, r.len);
+    if (!on_screen(ray_pixel(r, 0.5 * (lo + hi)))) return trace_miss(steps);
     steps += 1.0;
     vec2 uv;
-    int c = classify(r, s, 0.5 * stride, backfaces, uv);
-    if (armed && c == INSIDE) {
-      if (stride <= 1.0 || params.refine_steps <= 0) return TraceResult(true, uv, steps, length(ray_view(r, s) - origin));
-      // Bisect (s_prev, s] for the first pixel the ray reaches the surface at (not FRONT; s_prev
-      // was not a hit), testing one pixel's z-range at a time; stop at pixel precision.
-      float a = s_prev, b = s;
+    int c = classify(r, lo, hi, backfaces, uv);
+    // A stride-wide stretch is judged by its middle pixel only: a ray that went from in front to
+    // behind it may have entered a slab at another pixel of the stretch, so look there too.
+    if (c == INSIDE || (c == BEHIND && prev == FRONT)) {
+      // Bisect the stretch for where the ray point first reaches the surface, then test the last
+      // sub-stretch (<= 1 px with enough steps). Without refinement the stretch's answer stands,
+      // as in the paper.
+      float a = lo, b = hi;
+      int f = c;
       for (int k = 0; k < params.refine_steps && b - a > 1.0; ++k) {
         float m = 0.5 * (a + b);
         vec2 muv;
         steps += 1.0;
-        if (classify(r, m, 0.5, backfaces, muv) != FRONT) b = m; else a = m;
+        if (classify(r, m, m, backfaces, muv) != FRONT) b = m; else a = m;
       }
-      // Confirm at pixel scale: a stride-wide z-range can overlap a slab the ray never enters.
-      steps += 1.0;
-      if (classify(r, b, 0.5, backfaces, uv) == INSIDE) return TraceResult(true, uv, steps, length(ray_view(r, b) - origin));
+      if (b - a < hi - lo) {
+        steps += 1.0;
+        f = classify(r, a, b, backfaces, uv);
+      }
+      if (f == INSIDE && (armed || !origin_surface(uv, origin, n)))
+        return TraceResult(true, uv, steps, length(ray_view(r, 0.5 * (a + b)) - origin));
     }
     armed = armed || c == FRONT;
-    s_prev = s;
+    prev = c;
   }
   return trace_miss(steps);
 }

@@ -6,7 +6,8 @@
 // climbs a level; elsewhere it may pass behind something, so it descends (first advancing to
 // where it reaches the cell's closest depth) until one pixel confirms the hit with the shared
 // thickness test. The in-front test uses the segment's smaller depth, so rays towards the camera
-// (depth growing) need no separate path.
+// (depth growing) need no separate path. The traversal visits every cell the ray crosses, so it
+// needs no jitter.
 #include "common/ssr_common.glsl"
 #include "shared/hiz.h"
 
@@ -50,15 +51,16 @@ TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   int top = clamp(params.max_level, 0, textureQueryLevels(hiz_tex) - 1);
   int level = clamp(params.start_level, 0, top);
   ivec2 size0 = textureSize(hiz_tex, 0);
-  // Start one cell away, where the ray leaves the origin's pixel, and only accept a hit once
-  // the ray has been seen in front of the depth buffer: no hit on the starting surface.
+  // Start one cell away, where the ray leaves the origin's pixel; no hit on the starting surface
+  // (see the level-0 test).
   float t = cell_exit(o.xy, inv_d, hiz_cell(o.xy, 0, size0), 0, size0) + cross_t;
   bool was_in_front = false;
   int i = 0;
   for (; i < params.max_iterations; ++i) {
     vec2 q = o.xy + d.xy * t;
     if (t >= 1.0 || any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, res))) break;
-    ivec2 size = textureSize(hiz_tex, level);
+    // The mip chain halves with floor; textureSize with a per-lane lod is wrong on llvmpipe.
+    ivec2 size = max(size0 >> level, ivec2(1));
     ivec2 c = hiz_cell(q, level, size);
     float t_exit = min(cell_exit(o.xy, inv_d, c, level, size), 1.0);
     float closest = texelFetch(hiz_tex, c, level).r;
@@ -80,10 +82,13 @@ TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
       --level;
       continue;
     }
-    // One pixel: test the segment's point nearest to the surface from behind.
+    // One pixel: test the segment's point nearest to the surface from behind. Before the ray
+    // has been seen in front, only a surface facing the ray counts: a ray that crosses a wall
+    // within its origin's pixel hits it, one skimming its own surface does not.
     float hit_depth = min(closest, max(z_in, z_out));
     vec2 uv = (vec2(c) + 0.5) * frame.viewport.zw;
-    if (was_in_front && inside_surface(uv, view_z_from_depth(hit_depth), params.thickness, backfaces))
+    bool facing = dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1;
+    if ((was_in_front || facing) && inside_surface(uv, view_z_from_depth(hit_depth), params.thickness, backfaces))
       return TraceResult(true, uv, float(i + 1), length(view_position(uv, hit_depth) - origin));
     // Behind by more than the thickness (or on the starting surface): go on past this pixel.
     t = t_exit + cross_t;

@@ -1,9 +1,14 @@
 // `dda`: McGuire & Mara 2014 (JCGT 3(4), "Efficient GPU Screen-Space Ray Tracing"). The view-space
 // ray is clipped to the near plane and max_distance, projected once, and marched over the
 // screen one pixel (times `stride`) along its major axis per step, interpolating 1/w and
-// view/w linearly in screen space for perspective-correct depth. Each step compares the ray's
-// z-range over the step with the depth buffer (thickness, or the shared back-face option);
-// with stride > 1, bisection inside the last stride places the hit at pixel precision.
+// view/w linearly in screen space for perspective-correct depth.
+// Choices (shaders/techniques/dda.comp says why):
+// - hit test: the paper's z-range test (the step's view-z interval against the depth buffer),
+//   phrased through inside_surface() so the shared back-face thickness option works;
+// - with stride > 1, bisection inside the stride places the hit at pixel precision;
+// - no self-hits: a hit needs an earlier step wholly in front of the visible surface, or a
+//   surface in front of the origin's tangent plane (contact reflections, e.g. wall on floor);
+// - jitter shifts the grid of steps instead of skipping the ray's first jitter * stride pixels.
 #include "shared/dda.h"
 #include "techniques/tracer.h"
 
@@ -18,7 +23,7 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
                     "A ray this far or less behind the depth buffer counts as inside the surface."),
     SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units", "Longest reflection ray, before near-plane clipping."),
     SSR_PARAM_INT(P, refine_steps, 0, 16, "steps", "Bisection steps inside the last stride when stride > 1 (0: keep the stride's hit)."),
-    SSR_PARAM_BOOL(P, jitter, "Offset each ray's start by a per-pixel random fraction of the stride."),
+    SSR_PARAM_BOOL(P, jitter, "Shift each pixel's steps by a random fraction of the stride: banding from large strides becomes noise."),
 });
 
 }  // namespace

@@ -43,7 +43,7 @@ void HizPyramid::build(const gl::Texture2D& depth) {
     program_.dispatch_2d(lw, lh);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the next level (and the trace) fetch this one
   }
-  if (texture_.levels() == 1) glBindTextureUnit(TEX_HIZ, texture_.id());
+  glBindTextureUnit(TEX_HIZ, texture_.id());  // for the trace (a 1x1 chain never rebound it)
 }
 
 namespace {

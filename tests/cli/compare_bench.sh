@@ -10,6 +10,7 @@ trap 'rm -rf "$tmp"' EXIT
 "$SSRLAB" bench --scenes gallery,cornell --sizes 64x36,96x54 --techniques none,linear \
   --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
+"$SSRLAB" compare --scene glass --size 64x36 --frames 1 --out "$tmp/glass.png" --set reference.samples=4
 
 python3 - "$tmp" <<'PY'
 import json, math, os, sys
@@ -72,11 +73,10 @@ PY
 
 # Bad input: exit 2, nothing written.
 for args in "bench --json $tmp/x.json --sweep linear.max_steps=0,8" \
-            "bench --json $tmp/x.json --sweep dda.max_steps=8" \
+            "bench --json $tmp/x.json --techniques linear --sweep dda.max_steps=8" \
             "bench --json $tmp/x.json --sizes 0x0" \
             "bench --json $tmp/x.json --techniques nope" \
             "bench --json $tmp/x.json --preset nope" \
-            "bench --json $tmp/x.json --preset roberts-default" \
             "bench --plot $tmp/x.png" \
             "bench" \
             "compare --out $tmp/x.png --techniques linear,,none" \

@@ -70,8 +70,9 @@ TEST(Hiz, PyramidMatchesCpuMaxReduction) {
   test::expect_no_gl_errors();
 }
 
-// The hierarchical trace finds what a dense march finds: hiz at its defaults (iteration cap,
-// 0.15 thickness) is within 0.5 dB of linear-binary with 500 steps on the traceable pixels.
+// The hierarchical trace finds what a dense march finds: hiz at its defaults (128 iterations,
+// 0.15 thickness) and the same ray length is within 0.5 dB of linear-binary with 500 steps on
+// the traceable pixels (measured on llvmpipe: hiz 22.6 dB, linear-binary 20.0 dB).
 TEST(Hiz, MatchesLinearBinaryWith500Steps) {
   const auto lb = test::score_technique("gallery", 192, 108, "linear-binary",
                                         {"linear-binary.linear_steps=500", "linear-binary.max_distance=30",

@@ -58,10 +58,11 @@ TEST(Tracers, ErrorFallsAsStepsGrow) {
   test::expect_no_gl_errors();
 }
 
-// Hard cases, for every tracer: finite output, confidence in [0,1], bounded error.
-// grazing: the `low` camera skims the mirror floor; corridor `back` looks back towards the
-// start so many rays head towards the camera and cross the near plane; corridor `default`
-// sends reflections off the screen edges.
+// Hard cases, for every tracer: finite output and bounded error (score() also counts
+// non-finite values anywhere in the reflection and final images). grazing: the `low` camera
+// skims the mirror floor; corridor `back` looks back towards the start so many rays head
+// towards the camera and cross the near plane; corridor `default` sends reflections off the
+// screen edges; glass `close` refracts through the sphere.
 TEST(Tracers, HardCasesStayFiniteAndBounded) {
   struct Hard {
     const char* scene;
@@ -69,17 +70,27 @@ TEST(Tracers, HardCasesStayFiniteAndBounded) {
     double min_psnr;  // over all reflective pixels, vs the truth
   };
   const Hard cases[] = {{"gallery", "low", 8.0}, {"corridor", "back", 8.0}, {"corridor", "default", 8.0},
-                        {"cornell", "default", 8.0}};
+                        {"cornell", "default", 8.0}, {"glass", "close", 8.0}};
+  // The shared options too: rough lobes (roughness 1, 4 samples), back-face thickness, fades.
+  const std::vector<std::vector<std::string>> options = {
+      {"roughness=-1"}, {"roughness=1", "samples=4"}, {"backface_thickness=true"},
+      {"edge_fade=true", "falloff_distance=5"}};
   for (const TracerCase& c : kTracers)
     for (const Hard& h : cases)
-      for (const char* rough : {"-1", "1"}) {
+      for (const auto& opts : options) {
         std::vector<std::string> a = c.fixed;
-        a.push_back(std::string(c.technique) + ".roughness=" + rough);
-        a.push_back(std::string(c.technique) + ".samples=4");
+        std::string label;
+        for (const std::string& o : opts) {
+          a.push_back(std::string(c.technique) + "." + o);
+          label += " " + o;
+        }
         const auto s = test::score_technique(h.scene, 128, 72, c.technique, a, h.camera);
-        EXPECT_EQ(s.error.nonfinite, 0u) << c.technique << " " << h.scene << "/" << h.camera;
-        EXPECT_GE(s.error.psnr, h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera
-                                            << " roughness " << rough;
+        EXPECT_EQ(s.error.nonfinite, 0u) << c.technique << " " << h.scene << "/" << h.camera << label;
+        EXPECT_GE(s.error.psnr, h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera << label;
       }
+  // The Roberts blend replaces the composite: still finite, confidence-weighted.
+  const auto roberts = test::score_technique("gallery", 128, 72, "linear-binary",
+                                             {"linear-binary.blend=roberts", "linear-binary.fresnel=true"});
+  EXPECT_EQ(roberts.error.nonfinite, 0u);
   test::expect_no_gl_errors();
 }
