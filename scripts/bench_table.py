@@ -14,6 +14,24 @@ import json
 import sys
 
 
+def labels_of(run):
+    """Technique + the parameters that vary among its (non-preset) results in this run."""
+    varying = {}
+    for r in run["results"]:
+        if r.get("preset"):
+            continue
+        for k, v in r["params"].items():
+            varying.setdefault((r["technique"], k), set()).add(json.dumps(v))
+    out = []
+    for r in run["results"]:
+        if r.get("preset"):
+            out.append(f"{r['technique']} [{r['preset']}]")
+            continue
+        keys = [k for k in r["params"] if len(varying[(r["technique"], k)]) > 1]
+        out.append(" ".join([r["technique"]] + [f"{k.split('.', 1)[1]}={json.dumps(r['params'][k])}" for k in keys]))
+    return out
+
+
 def fmt(v, digits=2):
     return f"{v:.{digits}f}"
 
@@ -31,10 +49,10 @@ def main(paths):
             print("| technique | median ms | min | max | x floor | PSNR dB | PSNR traceable dB "
                   "| coverage | non-finite |")
             print("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
-            for r in run["results"]:
+            for label, r in zip(labels_of(run), run["results"]):
                 t = r["time_ms"]
                 e = r["error"]
-                print(f"| {r.get('label', r['technique'])} | {fmt(t['median'], 3)} | {fmt(t['min'], 3)} "
+                print(f"| {label} | {fmt(t['median'], 3)} | {fmt(t['min'], 3)} "
                       f"| {fmt(t['max'], 3)} | {fmt(r['time_over_floor'], 1)} | {fmt(e['psnr'])} "
                       f"| {fmt(e['psnr_traceable'])} | {e['coverage'] * 100:.1f}% | {r['nonfinite']} |")
             print()
@@ -56,6 +74,7 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
                 ok = [r for r in rs if r["error"]["psnr_traceable"] >= target - slack]
                 return min(ok, key=lambda r: r["time_ms"]["median"]) if ok else None
             ref = fastest(base)
+            label = dict(zip(map(id, run["results"]), labels_of(run)))
             w, h = run["size"]
             for tech in sorted({r["technique"] for r in run["results"]} - {"none"}):
                 best = fastest([r for r in run["results"] if r["technique"] == tech and not r.get("preset")])
@@ -63,7 +82,7 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
                     print(f"| {run['scene']} | {w}x{h} | {fmt(target)} | {tech} | does not reach it | | |")
                     continue
                 ratio = ref["time_ms"]["median"] / best["time_ms"]["median"]
-                print(f"| {run['scene']} | {w}x{h} | {fmt(target)} | {tech} | {best.get('label', tech)} "
+                print(f"| {run['scene']} | {w}x{h} | {fmt(target)} | {tech} | {label[id(best)]} "
                       f"| {fmt(best['time_ms']['median'], 3)} | {fmt(ratio)}x |")
     print()
 

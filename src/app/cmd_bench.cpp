@@ -92,25 +92,33 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
       s.points.push_back({t.time_ms.median, t.error.psnr_traceable});
       s.labels.push_back(t.preset.empty() ? t.label.substr(t.technique.size()) : t.preset);
     }
-    for (PlotSeries& s : pareto.series) {  // sort each curve by time so lines do not zigzag
+    // Each technique's curve is its Pareto front (sorted by time, each point better than every
+    // faster one); the variants it dominates are drawn as unlabelled markers beside it.
+    std::vector<PlotSeries> fronts;
+    for (const PlotSeries& s : pareto.series) {
       std::vector<std::size_t> idx(s.points.size());
       for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
       std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return s.points[a].first < s.points[b].first; });
-      PlotSeries sorted{s.name, {}, {}, s.lines};
+      PlotSeries front{s.name, {}, {}, s.lines}, rest{s.name + " (dominated)", {}, {}, false};
+      double best = -1e300;
       for (auto k : idx) {
-        sorted.points.push_back(s.points[k]);
-        sorted.labels.push_back(s.labels[k]);
+        PlotSeries& to = s.points[k].second > best ? front : rest;
+        best = std::max(best, s.points[k].second);
+        to.points.push_back(s.points[k]);
+        to.labels.push_back(&to == &front ? s.labels[k] : "");
       }
-      s = sorted;
+      fronts.push_back(front);
+      if (!rest.points.empty()) fronts.push_back(rest);
     }
+    pareto.series = fronts;
     const std::string suffix = "-" + run.scene + "-" + size_name(run.width, run.height) + ".svg";
     write(r == 0 ? o.plot : stem + "-pareto" + suffix, pareto);  // the first run: the --plot file
     // Time vs the swept parameter, per technique with a sweep.
     PlotSpec sweep{"Time vs swept parameter, " + where, "parameter value", "time (ms, " + clock + ")", false, false, {}};
     for (std::size_t i = 0; i < run.results.size(); ++i) {
-      if (variants[i].swept_key.empty()) continue;
+      if (variants[i].swept_keys.empty()) continue;
       const TechniqueResult& t = run.results[i];
-      const std::string name = variants[i].swept_key;
+      const std::string name = variants[i].swept_keys.front();  // plotted against the first swept key
       auto it = std::find_if(sweep.series.begin(), sweep.series.end(), [&](const PlotSeries& s) { return s.name == name; });
       if (it == sweep.series.end()) { sweep.series.push_back({name, {}, {}, true}); it = sweep.series.end() - 1; }
       for (const auto& [k, v] : t.params)

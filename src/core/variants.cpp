@@ -11,10 +11,14 @@ namespace ssr {
 
 std::string Variant::label() const {
   if (!preset.empty()) return technique + " [" + preset + "]";
-  if (swept_key.empty()) return technique;
-  for (auto it = assignments.rbegin(); it != assignments.rend(); ++it)
-    if (it->rfind(swept_key + "=", 0) == 0) return technique + " " + it->substr(technique.size() + 1);
-  return technique;
+  std::string out = technique;
+  for (const std::string& key : swept_keys)
+    for (auto it = assignments.rbegin(); it != assignments.rend(); ++it)
+      if (it->rfind(key + "=", 0) == 0) {
+        out += " " + it->substr(technique.size() + 1);  // "max_steps=64"
+        break;
+      }
+  return out;
 }
 
 std::vector<std::string> split_list(const std::string& text, const std::string& what) {
@@ -71,14 +75,14 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
 
   std::vector<Variant> out;
   for (const std::string& t : techniques) {
-    std::vector<Variant> vs = {{t, "", sets_for(t, sets), ""}};
+    std::vector<Variant> vs = {{t, "", sets_for(t, sets), {}}};
     for (const auto& [key, values] : sweep_of[t]) {
       std::vector<Variant> next;
       for (const Variant& v : vs)
         for (const std::string& value : values) {
           Variant n = v;
           n.assignments.push_back(key + "=" + value);
-          n.swept_key = key;
+          n.swept_keys.push_back(key);
           next.push_back(n);
         }
       vs = next;
@@ -87,7 +91,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   }
   for (const std::string& name : preset_names) {
     const Preset& p = find_preset(name);
-    out.push_back({p.technique, p.name, p.assignments, ""});
+    out.push_back({p.technique, p.name, p.assignments, {}});
   }
   // Validate every assignment now, before any GL work.
   for (const Variant& v : out) {

@@ -10,8 +10,8 @@ struct Variant {
   std::string technique;
   std::string preset;                    // "" unless it comes from --preset
   std::vector<std::string> assignments;  // "technique.key=value", applied in order
-  std::string swept_key;                 // the key a sweep varied ("" if none)
-  std::string label() const;             // "linear", "linear max_steps=64", "linear [thesis-hq]"
+  std::vector<std::string> swept_keys;   // the keys sweeps varied, in command-line order
+  std::string label() const;  // "linear", "dda stride=2 max_steps=64", "linear [thesis-hq]"
 };
 
 // Builds and validates the variants (InputError on any unknown technique, key or value):
