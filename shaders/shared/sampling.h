@@ -8,12 +8,6 @@
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN
-#ifdef __cplusplus
-using namespace glm;
-#define SSR_FN inline
-#else
-#define SSR_FN
-#endif
 
 // PCG hash (Jarzynski & Olano 2020): a good 32-bit mix, identical in C++ and GLSL.
 SSR_FN uint pcg_hash(uint v) {

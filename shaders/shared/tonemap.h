@@ -4,12 +4,6 @@
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN
-#ifdef __cplusplus
-using namespace glm;
-#define SSR_FN inline
-#else
-#define SSR_FN
-#endif
 
 // ACES filmic fit (Narkowicz 2015); input is linear radiance scaled by the exposure.
 SSR_FN vec3 tonemap_aces(vec3 x) {
