@@ -46,6 +46,8 @@ void main() {
     else if (u_view == VIEW_STEPS) v = heat(texelFetch(debug_tex, p, 0).x / 256.0);
     else if (u_view == VIEW_HITS) v = vec3(texelFetch(debug_tex, p, 0).y);
     else if (u_view == VIEW_DISTANCE) v = heat(texelFetch(debug_tex, p, 0).z / 20.0);
+    else if (u_view == VIEW_OFFSETS) v = vec3(0.5 + texelFetch(debug_tex, p, 0).xy * frame.viewport.zw, 0.5);
+    else if (u_view == VIEW_HOLES) v = vec3(texelFetch(debug_tex, p, 0).zw, 0.0);
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);

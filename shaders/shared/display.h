@@ -15,4 +15,6 @@
 #define VIEW_STEPS 10       // tracer iterations per ray, heat map (0 .. 256+)
 #define VIEW_HITS 11        // share of the pixel's rays that hit, grey
 #define VIEW_DISTANCE 12    // mean hit distance, heat map (0 .. 20 world units)
-#define VIEW_COUNT 13
+#define VIEW_OFFSETS 13     // PPR: decoded offset to the source pixel as colour (0.5 = none)
+#define VIEW_HOLES 14       // PPR: red = hole before patching, yellow = still a hole after
+#define VIEW_COUNT 15

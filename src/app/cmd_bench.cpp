@@ -26,7 +26,8 @@ namespace ssr {
 namespace {
 
 struct BenchOptions {
-  std::string scenes = "gallery";
+  std::string scenes;                 // comma-separated
+  std::vector<std::string> scene_list;  // --scene, repeatable (for names with options and commas)
   std::string techniques;  // default: every technique but reference and planar
   std::vector<std::string> presets;
   std::vector<std::string> sets;
@@ -164,8 +165,12 @@ int run_bench(const BenchOptions& o) {
   if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
   std::vector<std::pair<int, int>> sizes;
   for (const std::string& s : split_list(o.sizes, "size")) sizes.push_back(parse_named_size(s));
+  std::vector<std::string> scene_names = o.scene_list;
+  if (!o.scenes.empty())
+    for (const std::string& s : split_list(o.scenes, "scene")) scene_names.push_back(s);
+  if (scene_names.empty()) scene_names.push_back("gallery");
   std::vector<Scene> scenes;
-  for (const std::string& s : split_list(o.scenes, "scene")) scenes.push_back(load_scene(s));
+  for (const std::string& s : scene_names) scenes.push_back(load_scene(s));
   std::vector<std::string> names;
   if (o.techniques.empty()) {
     for (const TechniqueInfo& t : technique_registry())
@@ -227,7 +232,8 @@ int run_bench(const BenchOptions& o) {
 Command add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* c = app.add_subcommand("bench", "Time and score techniques over scenes, sweeps and sizes.");
-  c->add_option("--scenes", o->scenes, "Comma-separated scenes.")->capture_default_str();
+  c->add_option("--scenes", o->scenes, "Comma-separated scenes (default gallery).");
+  c->add_option("--scene", o->scene_list, "One scene, options allowed: gallery:reflectors=4,normal_map=tiles (repeatable).");
   c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all screen-space ones).");
   c->add_option("--preset", o->presets, "Add a named preset as its own variant (repeatable).");
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");

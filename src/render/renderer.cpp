@@ -14,7 +14,8 @@ namespace ssr {
 const std::vector<std::string>& view_mode_names() {
   static const std::vector<std::string> names = {"final", "reflection", "confidence", "lit",
                                                  "normal", "depth", "albedo", "roughness",
-                                                 "metallic", "mask", "steps", "hits", "distance"};
+                                                 "metallic", "mask", "steps", "hits", "distance",
+                                                 "offsets", "holes"};
   return names;
 }
 

@@ -25,7 +25,8 @@ enum class ViewMode : int {
   Final = VIEW_FINAL, Reflection = VIEW_REFLECTION, Confidence = VIEW_CONFIDENCE,
   Lit = VIEW_LIT, Normal = VIEW_NORMAL, Depth = VIEW_DEPTH, Albedo = VIEW_ALBEDO,
   Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
-  Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE,
+  Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE, Offsets = VIEW_OFFSETS,
+  Holes = VIEW_HOLES,
 };
 // Names as the CLI takes them ("final", "reflection", ...), in enum order.
 const std::vector<std::string>& view_mode_names();

@@ -2,6 +2,19 @@
 //
 // gallery  (default) 32 x 17 m mirror floor (planar reflector 1, metallic 1, roughness 0) with
 //          boxes, spheres, columns, a brick back wall and a red emissive "marker" sphere.
+//          Options (`gallery:reflectors=5,normal_map=tiles`):
+//            reflectors=1..16 (default 1): N planar reflectors. N = 1 is the plain floor; N >= 2
+//              adds a vertical mirror panel on the left (x = -8, facing +X), N >= 4 a second one
+//              on the right (x = +9.5, facing -X), and the floor is split into the remaining
+//              F = N - panels tiles (F = 1: the whole floor, still named "floor"), 4 cm apart
+//              over a dark grout plane 1 cm below. Ids: floor tiles 1..F (back row first, left
+//              to right), then the left panel, then the right one. Every tile is partly in view
+//              of the default camera, and the floor tiles' rectangles run on behind the panels,
+//              so reflectors overlap in screen space.
+//            normal_map=ripples|tiles|none (default none): a procedural tangent-space normal map
+//              on the mirror floor (ripples: concentric ripples from a few drops plus a faint
+//              sine swell, 4 m per repeat; tiles: 0.5 m bevelled square tiles, 2 m per repeat).
+//              The floor stays a planar reflector with the same rectangle(s).
 // cornell  5 x 5 x 5 m box open at the front (+Z): red left, green right, white back and
 //          ceiling, glossy metal floor (roughness 0.3, no planar reflector), two white boxes.
 // corridor 4 m wide, 3.5 m high, 40 m long, near-mirror floor (planar reflector 1, roughness
@@ -13,9 +26,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
 #include <cstdint>
+#include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -158,16 +175,209 @@ Image bricks(int size, int rows, int cols, glm::vec3 brick_srgb, glm::vec3 morta
   return im;
 }
 
+// ---- normal maps --------------------------------------------------------------------------------
+// Tangent-space normal maps (linear RGBA8, n * 0.5 + 0.5) built from a periodic height field
+// H(u, v) in units of one repeat of the map, u to the right and v *up* in the image, row 0 on
+// top (as every Image): pixel (x, row) samples u = (x + 0.5) / S, v = 1 - (row + 0.5) / S. The
+// normal is normalize(-dH/du, -dH/dv, 1) by central differences with wrap-around, so it is
+// seamless; its +X is the mesh tangent (+u) and its +Y the bitangent (+v, image up).
+
+template <class HeightFn>
+Image normal_map_from_height(int size, HeightFn height) {
+  std::vector<float> h(static_cast<std::size_t>(size) * size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      h[static_cast<std::size_t>(y) * size + x] =
+          height((static_cast<float>(x) + 0.5f) / static_cast<float>(size),
+                 1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(size));
+  auto at = [&](int x, int y) {
+    x = (x + size) % size;
+    y = (y + size) % size;
+    return h[static_cast<std::size_t>(y) * size + x];
+  };
+  Image im;
+  im.width = im.height = size;
+  im.rgba.resize(static_cast<std::size_t>(size) * size * 4);
+  const float half_s = 0.5f * static_cast<float>(size);
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const float dhdu = (at(x + 1, y) - at(x - 1, y)) * half_s;
+      const float dhdv = (at(x, y - 1) - at(x, y + 1)) * half_s;  // row y - 1 is higher up (+v)
+      const glm::vec3 n = glm::normalize(glm::vec3(-dhdu, -dhdv, 1.0f));
+      std::uint8_t* p = &im.rgba[(static_cast<std::size_t>(y) * size + x) * 4];
+      for (int c = 0; c < 3; ++c)
+        p[c] = static_cast<std::uint8_t>(std::lround(std::clamp(n[c] * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+      p[3] = 255;
+    }
+  }
+  return im;
+}
+
+// Concentric ripples around three drops (each windowed smoothly to zero within its radius,
+// measured on the torus so the map tiles) over a faint diagonal sine swell. Steepest ripple
+// slope ~0.18 (10 deg), the swell's 0.04.
+Image ripples_normal_map(int size) {
+  constexpr float two_pi = 2.0f * std::numbers::pi_v<float>;
+  struct Drop {
+    float u, v, radius, wavelength;
+  };
+  static constexpr Drop drops[] = {{0.30f, 0.62f, 0.45f, 0.055f},
+                                   {0.74f, 0.30f, 0.40f, 0.070f},
+                                   {0.82f, 0.84f, 0.28f, 0.045f}};
+  return normal_map_from_height(size, [&](float u, float v) {
+    float h = 0.04f / (two_pi * std::sqrt(13.0f)) * std::sin(two_pi * (2.0f * u + 3.0f * v));
+    for (const Drop& d : drops) {
+      float du = u - d.u, dv = v - d.v;
+      du -= std::round(du);
+      dv -= std::round(dv);
+      const float r = std::sqrt(du * du + dv * dv) / d.radius;
+      if (r >= 1.0f) continue;
+      const float w = (1.0f - r * r) * (1.0f - r * r);
+      h += 0.18f * d.wavelength / two_pi * w * std::cos(two_pi * r * d.radius / d.wavelength);
+    }
+    return h;
+  });
+}
+
+// `per_side` x `per_side` square tiles per repeat: flat tops, a bevel 10% of a tile wide
+// sloping down at ~31 deg (slope 0.6) to a flat groove 6% of a tile wide between tiles.
+Image tiles_normal_map(int size, int per_side) {
+  constexpr float groove = 0.03f, bevel = 0.10f, slope = 0.6f;  // in units of one tile
+  const float n = static_cast<float>(per_side);
+  return normal_map_from_height(size, [&](float u, float v) {
+    const float a = u * n - std::floor(u * n), c = v * n - std::floor(v * n);
+    const float e = std::min(std::min(a, 1.0f - a), std::min(c, 1.0f - c));  // to the nearest edge
+    return slope * bevel / n * std::clamp((e - groove) / bevel, 0.0f, 1.0f);
+  });
+}
+
+// ---- options ------------------------------------------------------------------------------------
+// "name:key=value,key=value". Each scene lists the options it takes; parse_options checks keys
+// and values and fills in the defaults, so a maker reads every key it declared with opt.at().
+
+struct OptionSpec {
+  std::string key;
+  int min = 0, max = 0;              // integer options: the allowed range
+  std::vector<std::string> choices;  // choice options; empty for an integer option
+  std::string default_value;
+  std::string allowed() const {
+    if (choices.empty()) return std::to_string(min) + ".." + std::to_string(max);
+    std::string s;
+    for (const std::string& c : choices) s += (s.empty() ? "" : "|") + c;
+    return s;
+  }
+};
+
+// Every option a scene declares, by key, as validated text (defaults filled in).
+using Options = std::map<std::string, std::string>;
+
+std::string options_help(const std::vector<OptionSpec>& specs) {
+  std::string s;
+  for (const OptionSpec& o : specs) s += (s.empty() ? "" : ", ") + o.key + "=" + o.allowed();
+  return s;
+}
+
 // ---- gallery ------------------------------------------------------------------------------------
 
-Scene gallery() {
+Scene gallery(const Options& opt) {
   Builder b;
   b.s.name = "gallery";
+  const int n_reflectors = std::stoi(opt.at("reflectors"));
+  const std::string& normal_map = opt.at("normal_map");
 
   // Floor: x in [-16, 16], z in [-7, 10], y = 0; a perfect mirror and planar reflector 1.
-  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
-  const int refl = b.floor_reflector({0, 0, 1.5f}, {16.0f, 8.5f});
-  b.mesh(meshgen::plane({32.0f, 17.0f}), "floor", mirror, translate({0, 0, 1.5f}), refl);
+  Material mirror_floor = mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f);
+  float normal_period = 1.0f;  // metres of floor per repeat of the normal map
+  if (normal_map != "none") {
+    normal_period = normal_map == "ripples" ? 4.0f : 2.0f;
+    mirror_floor.normal_texture =
+        b.image(normal_map == "ripples" ? ripples_normal_map(256) : tiles_normal_map(256, 4));
+    mirror_floor.normal_strength = 1.0f;
+  }
+  const int mirror = b.material(mirror_floor);
+  // The floor meshes come from meshgen::plane: tangent +X (w = +1), normal +Y, so the shader's
+  // bitangent cross(n, t) * w = -Z is dP/dv. A normal map's +Y (image up) therefore points
+  // away from the default camera (-Z) and its +X to the right (+X). World-anchored uvs keep the
+  // pattern continuous across floor tiles.
+  auto floor_uv = [&](Mesh& m) {
+    if (normal_map == "none") return;
+    for (Vertex& v : m.vertices)
+      v.uv = glm::vec2(v.position.x + 16.0f, 10.0f - v.position.z) / normal_period;
+  };
+  const int wall_panels = n_reflectors >= 4 ? 2 : (n_reflectors >= 2 ? 1 : 0);
+  const int tiles = n_reflectors - wall_panels;
+  if (tiles == 1) {
+    const int refl = b.floor_reflector({0, 0, 1.5f}, {16.0f, 8.5f});
+    Mesh floor = meshgen::plane({32.0f, 17.0f});
+    meshgen::transform(floor, translate({0, 0, 1.5f}));
+    floor_uv(floor);
+    b.mesh(std::move(floor), "floor", mirror, glm::mat4(1.0f), refl);
+  } else {
+    // Rows split z in [-7, 10] with inner boundaries spread evenly over [-7, 5] (the default
+    // camera sees the floor up to z ~ 4.9); within a row the inner column boundaries are spread
+    // over +-0.8 (7 - z_far) (a bit inside the frame at the row's far edge), the outer tiles
+    // running on to x = +-16. So every tile shows in the default view. Tiles are 4 cm apart.
+    constexpr float gap = 0.04f;
+    const int rows = std::clamp(static_cast<int>(std::lround(std::sqrt(tiles / 2.0f))), 1, 4);
+    auto row_z = [&](int i) {
+      return i == rows ? 10.0f : -7.0f + 12.0f * static_cast<float>(i) / static_cast<float>(rows);
+    };
+    int id_in_order = 0;
+    for (int i = 0; i < rows; ++i) {
+      const int cols = tiles / rows + (i < tiles % rows ? 1 : 0);  // extra tiles in the back rows
+      const float z0 = row_z(i) + (i > 0 ? 0.5f * gap : 0.0f);
+      const float z1 = row_z(i + 1) - (i + 1 < rows ? 0.5f * gap : 0.0f);
+      const float span = std::min(15.0f, 0.8f * (7.0f - row_z(i)));
+      auto col_x = [&](int j) {
+        if (j == 0) return -16.0f;
+        if (j == cols) return 16.0f;
+        return -span + 2.0f * span * static_cast<float>(j) / static_cast<float>(cols);
+      };
+      for (int j = 0; j < cols; ++j) {
+        const float x0 = col_x(j) + (j > 0 ? 0.5f * gap : 0.0f);
+        const float x1 = col_x(j + 1) - (j + 1 < cols ? 0.5f * gap : 0.0f);
+        const glm::vec3 c(0.5f * (x0 + x1), 0.0f, 0.5f * (z0 + z1));
+        const glm::vec2 size(x1 - x0, z1 - z0);
+        const int refl = b.floor_reflector(c, 0.5f * size);
+        Mesh tile = meshgen::plane(size);
+        meshgen::transform(tile, translate(c));
+        floor_uv(tile);
+        b.mesh(std::move(tile), "floor_tile_" + std::to_string(++id_in_order), mirror,
+               glm::mat4(1.0f), refl);
+      }
+    }
+    // What shows through the gaps: a dark matte plane just under the tiles.
+    b.mesh(meshgen::plane({32.0f, 17.0f}), "floor_grout",
+           b.material(mat("grout", glm::vec3(0.04f), 0.9f)), translate({0, -0.01f, 1.5f}));
+  }
+  if (wall_panels > 0) {
+    // Vertical mirrors standing on the floor, each on a dark frame box that hides its back.
+    const int wall_mirror = b.material(mat("wall_mirror", glm::vec3(0.95f), 0.0f, 1.0f, 1.0f));
+    const int frame = b.material(mat("mirror_frame", {0.12f, 0.10f, 0.09f}, 0.6f));
+    struct Panel {
+      const char* name;
+      float x, z, length;  // plane x, centre z, length along z; y in [0.2, 3.2]
+      float facing;        // +1: faces +X, -1: faces -X
+    };
+    const Panel panels[2] = {{"mirror_left", -8.0f, -3.5f, 6.0f, 1.0f},
+                             {"mirror_right", 9.5f, -4.0f, 5.0f, -1.0f}};
+    for (int k = 0; k < wall_panels; ++k) {
+      const Panel& p = panels[k];
+      Reflector r;
+      r.center = {p.x, 1.7f, p.z};
+      // normal() = cross(bitangent, tangent) = cross(+Y, +-Z) = +-X.
+      r.tangent = {0.0f, 0.0f, p.facing};
+      r.bitangent = {0.0f, 1.0f, 0.0f};
+      r.half_extents = {0.5f * p.length, 1.5f};
+      b.s.reflectors.push_back(r);
+      const int refl = static_cast<int>(b.s.reflectors.size());
+      // plane() faces +Y; rotating by -+90 deg about Z turns it to face +-X (its x -> height).
+      b.mesh(meshgen::plane({3.0f, p.length}), p.name, wall_mirror,
+             translate(r.center) * rotate_z(-90.0f * p.facing), refl);
+      b.mesh(meshgen::box({0.1f, 3.4f, p.length + 0.3f}), std::string(p.name) + "_frame", frame,
+             translate({p.x - p.facing * 0.06f, 1.7f, p.z}));
+    }
+  }
 
   // Back wall: z = -7, facing +Z, x in [-16, 16], y in [0, 7]; sandstone bricks, 2 m per tile.
   const int brick_img = b.image(bricks(256, 8, 4, {0.78f, 0.70f, 0.55f}, {0.55f, 0.55f, 0.53f}, 7U));
@@ -408,27 +618,105 @@ Scene glass() {
 
 struct Entry {
   BuiltinSceneInfo info;
-  Scene (*make)();
+  std::vector<OptionSpec> options;
+  Scene (*make)(const Options&);
 };
 
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> list = {
       {{"gallery",
         "mirror floor (planar reflector) with coloured boxes, spheres, columns, a brick wall and "
-        "a red marker sphere"},
+        "a red marker sphere; options gallery:reflectors=1..16 (floor tiles plus wall mirrors), "
+        "normal_map=ripples|tiles|none (e.g. gallery:reflectors=5,normal_map=tiles)"},
+       {{"reflectors", 1, Scene::kMaxReflectors, {}, "1"},
+        {"normal_map", 0, 0, {"ripples", "tiles", "none"}, "none"}},
        &gallery},
       {{"cornell",
         "5 m Cornell box, open at the front, with a glossy metal floor (roughness 0.3) and two "
         "boxes"},
-       &cornell},
+       {},
+       [](const Options&) { return cornell(); }},
       {{"corridor",
         "40 m corridor with a near-mirror floor (planar reflector, roughness 0.05), pillars and "
         "coloured panels"},
-       &corridor},
+       {},
+       [](const Options&) { return corridor(); }},
       {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
-       &glass},
+       {},
+       [](const Options&) { return glass(); }},
   };
   return list;
+}
+
+Options default_options(const Entry& e) {
+  Options o;
+  for (const OptionSpec& spec : e.options) o.emplace(spec.key, spec.default_value);
+  return o;
+}
+
+// Parses the text after "name:" for entry `e`; `full` is the whole scene string (for messages).
+Options parse_options(const Entry& e, const std::string& full, std::string_view text) {
+  const std::string& name = e.info.name;
+  std::string with_options;  // "; the scenes that take options: gallery (...)"
+  for (const Entry& other : entries())
+    if (!other.options.empty())
+      with_options += (with_options.empty() ? "" : "; ") + other.info.name + " (" +
+                      options_help(other.options) + ")";
+  if (e.options.empty()) {
+    const std::string key(text.substr(0, std::min(text.find('='), text.find(','))));
+    throw InputError("built-in scene '" + name + "' takes no options" +
+                     (key.empty() ? std::string() : " (not even '" + key + "')") + ", so '" +
+                     full + "' is not a scene; options exist only for " + with_options);
+  }
+  const std::string help = options_help(e.options);
+  if (text.empty())
+    throw InputError("scene '" + full + "' has nothing after ':'; write " + name +
+                     ":key=value[,key=value] with " + help);
+  Options given;
+  std::size_t pos = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', pos), text.size());
+    const std::string_view item = text.substr(pos, comma - pos);
+    const std::size_t eq = item.find('=');
+    const std::string key(item.substr(0, eq));
+    if (item.empty())
+      throw InputError("scene '" + full + "' has an empty option (options of " + name + ": " +
+                       help + ")");
+    if (key.empty())
+      throw InputError("scene '" + full + "' has an option without a key (options of " + name +
+                       ": " + help + ")");
+    const auto spec = std::find_if(e.options.begin(), e.options.end(),
+                                   [&](const OptionSpec& o) { return o.key == key; });
+    if (spec == e.options.end())
+      throw InputError("built-in scene '" + name + "' has no option '" + key + "' (options: " +
+                       help + ")");
+    if (eq == std::string_view::npos)
+      throw InputError("option '" + key + "' of built-in scene '" + name +
+                       "' has no value; write " + key + "=" + spec->allowed());
+    const std::string value(item.substr(eq + 1));
+    if (given.count(key))
+      throw InputError("option '" + key + "' is given twice in '" + full + "' (allowed: " + key +
+                       "=" + spec->allowed() + ")");
+    if (spec->choices.empty()) {
+      int v = 0;
+      const char* first = value.data();
+      const char* last = value.data() + value.size();
+      const auto [end, ec] = std::from_chars(first, last, v);
+      if (value.empty() || ec != std::errc() || end != last || v < spec->min || v > spec->max)
+        throw InputError("option '" + key + "' of built-in scene '" + name +
+                         "' must be an integer in " + spec->allowed() + ", not '" + value + "'");
+      given[key] = std::to_string(v);
+    } else {
+      if (std::find(spec->choices.begin(), spec->choices.end(), value) == spec->choices.end())
+        throw InputError("option '" + key + "' of built-in scene '" + name + "' must be one of " +
+                         spec->allowed() + ", not '" + value + "'");
+      given[key] = value;
+    }
+    if (comma == text.size()) break;
+    pos = comma + 1;
+  }
+  for (const auto& [key, value] : default_options(e)) given.emplace(key, value);
+  return given;
 }
 
 }  // namespace
@@ -443,9 +731,15 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
 }
 
 Scene make_builtin_scene(const std::string& name) {
+  const std::size_t colon = name.find(':');
+  const std::string base = name.substr(0, colon);
   for (const Entry& e : entries()) {
-    if (e.info.name == name) {
-      Scene s = e.make();
+    if (e.info.name == base) {
+      const Options opt = colon == std::string::npos
+                              ? default_options(e)
+                              : parse_options(e, name, std::string_view(name).substr(colon + 1));
+      Scene s = e.make(opt);
+      s.name = name;  // options included: results and file names record what was asked for
       validate(s);
       return s;
     }
@@ -453,7 +747,7 @@ Scene make_builtin_scene(const std::string& name) {
   std::ostringstream known;
   for (std::size_t i = 0; i < entries().size(); ++i)
     known << (i ? ", " : "") << entries()[i].info.name;
-  throw InputError("unknown built-in scene '" + name + "' (built-in scenes: " + known.str() + ")");
+  throw InputError("unknown built-in scene '" + base + "' (built-in scenes: " + known.str() + ")");
 }
 
 }  // namespace ssr

@@ -31,13 +31,18 @@ std::string builtin_names() {
 }  // namespace
 
 Scene load_scene(const std::string& name_or_path) {
-  for (const BuiltinSceneInfo& b : builtin_scenes())
-    if (b.name == name_or_path) {
+  // A built-in name, or one with options ("gallery:reflectors=4"): the part before ':' names a
+  // built-in scene and no file of that exact name exists (files keep their behaviour).
+  const std::string base = name_or_path.substr(0, name_or_path.find(':'));
+  const fs::path p(name_or_path);
+  for (const BuiltinSceneInfo& b : builtin_scenes()) {
+    std::error_code ec;
+    if (b.name == base && (base == name_or_path || !fs::exists(p, ec))) {
       Scene s = make_builtin_scene(name_or_path);
       validate(s);
       return s;
     }
-  const fs::path p(name_or_path);
+  }
   const bool is_json = ends_with_ci(name_or_path, ".json"),
              is_obj = ends_with_ci(name_or_path, ".obj");
   if (is_json || is_obj) {

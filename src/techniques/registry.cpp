@@ -9,6 +9,7 @@ std::unique_ptr<Technique> make_linear_technique();
 std::unique_ptr<Technique> make_linear_binary_technique();
 std::unique_ptr<Technique> make_dda_technique();
 std::unique_ptr<Technique> make_hiz_technique();
+std::unique_ptr<Technique> make_ppr_technique();
 std::unique_ptr<Technique> make_reference_technique();
 std::unique_ptr<Technique> make_planar_technique();
 
@@ -21,6 +22,8 @@ const std::vector<TechniqueInfo>& technique_registry() {
        make_linear_binary_technique},
       {"dda", "McGuire & Mara: perspective-correct per-pixel screen-space DDA with stride, jitter and refinement", make_dda_technique},
       {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
+      {"ppr", "Pixel-Projected Reflections: planar reflectors by projection (imageAtomicMin), hole patching",
+       make_ppr_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",

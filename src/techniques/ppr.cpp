@@ -1,0 +1,97 @@
+// `ppr`: Pixel-Projected Reflections (Kim 2018, after Cichocki 2017), a compute path with no ray
+// march at all. Projection pass: every pixel is mirrored across each planar reflector and, where
+// the camera sees that image through the reflector, writes (imageAtomicMin) the packed offset
+// back to itself into an r32ui intermediate image at the destination pixel. Resolve pass:
+// decode, patch holes from neighbours, fetch the reflected colour; normal maps and roughness
+// by the thesis's reprojection of the perturbed (or GGX-sampled) reflection vector.
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "shared/ppr.h"
+#include "shared/ppr_packing.h"
+#include "techniques/technique.h"
+
+namespace ssr {
+namespace {
+
+using P = shared::PprParams;
+const ParamDesc kTable[] = {
+    SSR_PARAM_CHOICE(P, hole_fill, "Fill pixels nothing projected onto from their neighbours' solutions.",
+                     "none", "4-neighbour", "8-neighbour"),
+    SSR_PARAM_INT(P, samples, 1, 16, "rays", "GGX VNDF samples per rough reflector pixel (per-pixel rotated)."),
+    SSR_PARAM_FLOAT(P, roughness, -1, 1, 0.01, "", "Override the G-buffer roughness everywhere (-1 keeps the material's)."),
+    SSR_PARAM_BOOL(P, normal_maps, "Follow normal-mapped normals: reflection distance times the perturbed reflection vector, reprojected."),
+    SSR_PARAM_BOOL(P, edge_fade, "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1)."),
+    SSR_PARAM_INT(P, seed, 0, 1000000, "", "Random seed of the rough samples."),
+};
+
+class PprTechnique final : public TechniqueWithParams<P> {
+ public:
+  PprTechnique() : TechniqueWithParams("ppr", kTable) {}
+
+  void load(const gl::ShaderSource& src) override {
+    auto project = gl::Program::compute(src, "techniques/ppr_project.comp");
+    auto resolve = gl::Program::compute(src, "techniques/ppr_resolve.comp");
+    project_ = std::move(project);
+    resolve_ = std::move(resolve);
+  }
+
+  bool writes_debug() const override { return true; }
+
+  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
+    const Scene& scene = in.scene;
+    // The reflectors, oriented towards this frame's camera; edge-on ones are left out.
+    const glm::vec3 eye = in.renderer.camera().position;
+    std::vector<shared::PprReflector> refl;
+    for (const Reflector& r : scene.reflectors) {
+      glm::vec3 n = r.normal();
+      float d = -glm::dot(n, r.center);
+      const float side = glm::dot(n, eye) + d;
+      if (std::abs(side) < 1e-6f * (1.0f + glm::length(eye))) n = glm::vec3(0.0f);  // edge-on: inert
+      if (side < 0) {
+        n = -n;
+        d = -d;
+      }
+      refl.push_back({glm::vec4(n, d), glm::vec4(r.center, 1.0f), glm::vec4(r.tangent, r.half_extents.x),
+                      glm::vec4(r.bitangent, r.half_extents.y)});
+    }
+    params_.reflector_count = static_cast<int>(refl.size());
+    if (refl.empty()) refl.push_back({});  // a buffer must have storage
+    reflectors_ = gl::make_buffer("ppr reflectors", static_cast<GLsizeiptr>(refl.size() * sizeof(refl[0])), refl.data(), 0);
+    if (intermediate_.width() != in.width || intermediate_.height() != in.height)
+      intermediate_ = gl::Texture2D("ppr intermediate", GL_R32UI, in.width, in.height);
+    const GLuint bits = shared::ppr_fraction_bits(static_cast<GLuint>(in.width), static_cast<GLuint>(in.height));
+
+    bind_params();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
+    {
+      gl::ScopedPass pass(in.timer, "ppr clear");
+      const GLuint empty = shared::PPR_EMPTY;
+      glClearTexImage(intermediate_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    {
+      gl::ScopedPass pass(in.timer, "ppr project");
+      glProgramUniform1ui(project_.id(), 0, bits);
+      project_.dispatch_2d(in.width, in.height);
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    {
+      gl::ScopedPass pass(in.timer, "ppr resolve");
+      glProgramUniform1ui(resolve_.id(), 0, bits);
+      glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      resolve_.dispatch_2d(in.width, in.height);
+    }
+  }
+
+ private:
+  gl::Program project_, resolve_;
+  gl::Texture2D intermediate_;
+  gl::Buffer reflectors_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_ppr_technique() { return std::make_unique<PprTechnique>(); }
+
+}  // namespace ssr
