@@ -3,15 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_io.h"
 
 namespace {
 
@@ -304,3 +307,252 @@ TEST(BuiltinScenes, CorridorDimensionsAndMirrorFloor) {
 }
 
 }  // namespace
+
+// ---- built-in scene options: gallery:reflectors=N, gallery:normal_map=... ------------------------
+
+namespace {
+
+// Is some point of reflector k's rectangle (a 9 x 9 grid, a little inside the edges) in the
+// default view at 16:9 and unoccluded by anything but the meshes of reflector k?
+bool reflector_in_view(const Scene& s, int k) {
+  const ssr::Reflector& r = s.reflectors.at(static_cast<std::size_t>(k - 1));
+  const ssr::Camera& cam = s.cameras[0];
+  std::set<std::string> own;
+  for (const Mesh& m : s.meshes)
+    if (m.reflector == k) own.insert(m.name);
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      const float a = -0.95f + 1.9f * static_cast<float>(i) / 8.0f;
+      const float b = -0.95f + 1.9f * static_cast<float>(j) / 8.0f;
+      const glm::vec3 p =
+          r.center + a * r.half_extents.x * r.tangent + b * r.half_extents.y * r.bitangent;
+      if (glm::dot(cam.position - p, r.normal()) <= 0.0f) continue;  // seen from behind
+      const auto ndc = to_ndc(cam, p);
+      if (!ndc || std::abs(ndc->x) > 0.98f || std::abs(ndc->y) > 0.98f) continue;
+      if (!segment_blocked(s, cam.position, p, own)) return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+TEST(BuiltinSceneOptions, GalleryReflectorsSplitsTheMirrorIntoNReflectors) {
+  for (const int n : {1, 2, 3, 4, 5, 8, 16}) {
+    const std::string name = "gallery:reflectors=" + std::to_string(n);
+    SCOPED_TRACE(name);
+    const Scene s = ssr::make_builtin_scene(name);
+    EXPECT_NO_THROW(ssr::validate(s));
+    EXPECT_EQ(s.name, name);
+    ASSERT_EQ(s.reflectors.size(), static_cast<std::size_t>(n));
+    // Every id 1..N is used by at least one mesh, and every such mesh lies in its rectangle
+    // (vertices within the half extents, on the plane within 1e-4, facing the reflecting side).
+    std::set<int> used;
+    for (const Mesh& m : s.meshes)
+      if (m.reflector) used.insert(m.reflector);
+    for (int k = 1; k <= n; ++k) EXPECT_TRUE(used.count(k)) << "reflector " << k << " has no mesh";
+    check_reflector_meshes(s);
+    for (std::size_t k = 0; k < s.reflectors.size(); ++k) {
+      const ssr::Reflector& r = s.reflectors[k];
+      EXPECT_NEAR(glm::length(r.tangent), 1.0f, 1e-6f);
+      EXPECT_NEAR(glm::length(r.bitangent), 1.0f, 1e-6f);
+      EXPECT_NEAR(glm::dot(r.tangent, r.bitangent), 0.0f, 1e-6f);
+      EXPECT_GT(r.half_extents.x, 0.0f);
+      EXPECT_GT(r.half_extents.y, 0.0f);
+      // Each reflector is seen by the default camera, from its reflecting side.
+      EXPECT_TRUE(reflector_in_view(s, static_cast<int>(k) + 1)) << "reflector " << k + 1;
+    }
+    // The rest of the gallery is still there.
+    for (const char* keep : {"marker", "back_wall", "sphere_gold", "column_1"})
+      EXPECT_NE(find_mesh(s, keep), nullptr) << keep;
+    // The floor reflectors (facing +Y at y = 0) cover the same 32 x 17 m as the plain floor,
+    // less the gaps between tiles.
+    float floor_area = 0.0f;
+    int vertical = 0;
+    for (const ssr::Reflector& r : s.reflectors) {
+      if (glm::dot(r.normal(), glm::vec3(0, 1, 0)) > 0.9999f) {
+        EXPECT_NEAR(r.center.y, 0.0f, 1e-6f);
+        floor_area += 4.0f * r.half_extents.x * r.half_extents.y;
+      } else {
+        EXPECT_NEAR(r.normal().y, 0.0f, 1e-6f);  // the others are vertical wall mirrors
+        ++vertical;
+      }
+    }
+    EXPECT_LE(floor_area, 32.0f * 17.0f + 1e-2f);
+    EXPECT_GT(floor_area, 0.97f * 32.0f * 17.0f);
+    EXPECT_EQ(vertical, n >= 4 ? 2 : (n >= 2 ? 1 : 0));
+  }
+  // reflectors=1 is the plain gallery.
+  const Scene plain = ssr::make_builtin_scene("gallery");
+  const Scene one = ssr::make_builtin_scene("gallery:reflectors=1");
+  ASSERT_EQ(one.meshes.size(), plain.meshes.size());
+  ASSERT_EQ(one.reflectors.size(), 1u);
+  EXPECT_EQ(one.reflectors[0].center, plain.reflectors[0].center);
+  EXPECT_EQ(one.reflectors[0].half_extents, plain.reflectors[0].half_extents);
+  for (std::size_t i = 0; i < one.meshes.size(); ++i) EXPECT_EQ(one.meshes[i].name, plain.meshes[i].name);
+}
+
+TEST(BuiltinSceneOptions, SomeReflectorsOverlapOnScreen) {
+  // With wall mirrors, a floor tile's rectangle runs on behind a wall mirror: their projected
+  // rectangles overlap in the default view (the case a PPR loop over reflectors must handle).
+  const Scene s = ssr::make_builtin_scene("gallery:reflectors=5");
+  const ssr::Camera& cam = s.cameras[0];
+  auto screen_box = [&](const ssr::Reflector& r, glm::vec2& lo, glm::vec2& hi) {
+    lo = glm::vec2(1e30f);
+    hi = glm::vec2(-1e30f);
+    for (int i = 0; i <= 16; ++i)
+      for (int j = 0; j <= 16; ++j) {
+        const float a = -1.0f + 2.0f * static_cast<float>(i) / 16.0f;
+        const float b = -1.0f + 2.0f * static_cast<float>(j) / 16.0f;
+        const auto ndc = to_ndc(cam, r.center + a * r.half_extents.x * r.tangent +
+                                         b * r.half_extents.y * r.bitangent);
+        if (!ndc) continue;
+        const glm::vec2 p = glm::clamp(glm::vec2(*ndc), glm::vec2(-1.0f), glm::vec2(1.0f));
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+  };
+  int overlaps = 0;
+  for (std::size_t a = 0; a < s.reflectors.size(); ++a)
+    for (std::size_t b = a + 1; b < s.reflectors.size(); ++b) {
+      if (std::abs(glm::dot(s.reflectors[a].normal(), s.reflectors[b].normal())) > 0.5f) continue;
+      glm::vec2 alo, ahi, blo, bhi;
+      screen_box(s.reflectors[a], alo, ahi);
+      screen_box(s.reflectors[b], blo, bhi);
+      const glm::vec2 lo = glm::max(alo, blo), hi = glm::min(ahi, bhi);
+      if (hi.x - lo.x > 0.05f && hi.y - lo.y > 0.05f) ++overlaps;
+    }
+  EXPECT_GE(overlaps, 1);
+}
+
+TEST(BuiltinSceneOptions, GalleryNormalMapsAreTangentSpaceAndReadRight) {
+  const Scene plain = ssr::make_builtin_scene("gallery");
+  for (const char* kind : {"ripples", "tiles"}) {
+    const std::string name = std::string("gallery:normal_map=") + kind;
+    SCOPED_TRACE(name);
+    const Scene s = ssr::make_builtin_scene(name);
+    EXPECT_NO_THROW(ssr::validate(s));
+    const Mesh* floor = find_mesh(s, "floor");
+    ASSERT_NE(floor, nullptr);
+    EXPECT_EQ(floor->reflector, 1);
+    ASSERT_EQ(s.reflectors.size(), 1u);
+    EXPECT_EQ(s.reflectors[0].center, plain.reflectors[0].center);  // rectangle unchanged
+    EXPECT_EQ(s.reflectors[0].half_extents, plain.reflectors[0].half_extents);
+    check_reflector_meshes(s);
+    const ssr::Material& m = s.materials.at(floor->material);
+    EXPECT_EQ(m.metallic, 1.0f);
+    EXPECT_EQ(m.roughness, 0.0f);
+    EXPECT_NEAR(m.normal_strength, 1.0f, 0.5f);
+    ASSERT_GE(m.normal_texture, 0);
+    const ssr::Image& im = s.images.at(m.normal_texture);
+    ASSERT_EQ(im.width, 256);
+    ASSERT_EQ(im.height, 256);
+    ASSERT_EQ(im.rgba.size(), 256u * 256u * 4u);
+    // Every texel is a unit normal pointing out of the surface; some are tilted.
+    auto texel = [&](int x, int y) {
+      const std::uint8_t* p = &im.rgba[(static_cast<std::size_t>(y) * 256 + x) * 4];
+      return glm::vec3(p[0], p[1], p[2]) / 255.0f * 2.0f - 1.0f;
+    };
+    int tilted = 0;
+    for (int y = 0; y < 256; ++y)
+      for (int x = 0; x < 256; ++x) {
+        const glm::vec3 n = texel(x, y);
+        EXPECT_NEAR(glm::length(n), 1.0f, 0.02f);
+        EXPECT_GT(n.z, 0.5f);
+        if (glm::length(glm::vec2(n)) > 0.03f) ++tilted;  // more than ~1.7 deg
+        if (HasFailure()) return;
+      }
+    EXPECT_GT(tilted, 256 * 256 / 10);
+    // The floor's tangent frame: tangent +X (w = +1), so the bitangent cross(n, t) * w is -Z,
+    // the direction v grows in; uvs repeat the map (not one copy over the whole floor).
+    glm::vec2 uv_lo(1e30f), uv_hi(-1e30f);
+    for (const ssr::Vertex& v : floor->vertices) {
+      EXPECT_NEAR(glm::dot(glm::vec3(v.tangent), glm::vec3(1, 0, 0)), 1.0f, 1e-6f);
+      EXPECT_EQ(v.tangent.w, 1.0f);
+      uv_lo = glm::min(uv_lo, v.uv);
+      uv_hi = glm::max(uv_hi, v.uv);
+    }
+    for (const ssr::Vertex& v : floor->vertices)
+      for (const ssr::Vertex& w : floor->vertices) {
+        if (v.position.x < w.position.x - 1.0f) EXPECT_LT(v.uv.x, w.uv.x);  // u along +X
+        if (v.position.z < w.position.z - 1.0f) EXPECT_GT(v.uv.y, w.uv.y);  // v along -Z
+      }
+    EXPECT_GE(uv_hi.x - uv_lo.x, 4.0f);
+  }
+  // Tiles: a tile's bevels tilt away from its centre. The top-left tile of the map spans
+  // pixels 0..63; its left bevel (column 4) tilts left (-X), its top bevel (row 4) tilts up
+  // the image (+Y), its right and bottom bevels the other ways; its middle is flat.
+  const Scene t = ssr::make_builtin_scene("gallery:normal_map=tiles");
+  const ssr::Image& im =
+      t.images.at(t.materials.at(find_mesh(t, "floor")->material).normal_texture);
+  auto px = [&](int x, int y, int c) {
+    return static_cast<int>(im.rgba[(static_cast<std::size_t>(y) * 256 + x) * 4 + c]);
+  };
+  EXPECT_LT(px(4, 32, 0), 100);   // left bevel: x < 0
+  EXPECT_GT(px(59, 32, 0), 156);  // right bevel: x > 0
+  EXPECT_GT(px(32, 4, 1), 156);   // top bevel: y > 0 (image up)
+  EXPECT_LT(px(32, 59, 1), 100);  // bottom bevel: y < 0
+  EXPECT_EQ(px(32, 32, 0), 128);
+  EXPECT_EQ(px(32, 32, 1), 128);
+  EXPECT_EQ(px(32, 32, 2), 255);
+  // none is the plain floor; options combine.
+  const Scene none = ssr::make_builtin_scene("gallery:normal_map=none");
+  EXPECT_EQ(none.materials.at(find_mesh(none, "floor")->material).normal_texture, -1);
+  const Scene both = ssr::make_builtin_scene("gallery:reflectors=3,normal_map=tiles");
+  EXPECT_EQ(both.reflectors.size(), 3u);
+  check_reflector_meshes(both);
+  for (const Mesh& m : both.meshes)
+    if (m.name.rfind("floor_tile_", 0) == 0)
+      EXPECT_GE(both.materials.at(m.material).normal_texture, 0) << m.name;
+}
+
+TEST(BuiltinSceneOptions, BadOptionsThrowInputErrorNamingTheKeyAndAllowedValues) {
+  struct Case {
+    const char* scene;
+    std::vector<std::string> words;  // each must appear in the message
+  };
+  const Case cases[] = {
+      {"gallery:reflectors=0", {"reflectors", "1..16", "'0'"}},
+      {"gallery:reflectors=17", {"reflectors", "1..16", "'17'"}},
+      {"gallery:reflectors=abc", {"reflectors", "1..16", "'abc'"}},
+      {"gallery:reflectors=-2", {"reflectors", "1..16"}},
+      {"gallery:reflectors=2x", {"reflectors", "1..16"}},
+      {"gallery:reflectors= 2", {"reflectors", "1..16"}},
+      {"gallery:reflectors=", {"reflectors", "1..16"}},
+      {"gallery:normal_map=waves", {"normal_map", "ripples|tiles|none", "'waves'"}},
+      {"gallery:normal_map=Ripples", {"normal_map", "ripples|tiles|none"}},
+      {"gallery:foo=1", {"'foo'", "reflectors=1..16", "normal_map=ripples|tiles|none"}},
+      {"cornell:reflectors=2", {"'cornell'", "no options", "reflectors", "gallery"}},
+      {"corridor:normal_map=tiles", {"'corridor'", "no options", "normal_map"}},
+      {"gallery:", {"gallery", "reflectors=1..16", "normal_map"}},
+      {"gallery:reflectors", {"'reflectors'", "1..16", "no value"}},
+      {"gallery:reflectors=2,", {"empty", "reflectors=1..16"}},
+      {"gallery:reflectors=2,reflectors=3", {"'reflectors'", "twice"}},
+      {"gallery:=2", {"reflectors=1..16"}},
+      {"nope:reflectors=2", {"'nope'", "gallery", "cornell"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.scene);
+    try {
+      ssr::make_builtin_scene(c.scene);
+      ADD_FAILURE() << "no exception";
+    } catch (const ssr::InputError& e) {
+      const std::string msg = e.what();
+      for (const std::string& w : c.words) EXPECT_NE(msg.find(w), std::string::npos) << msg;
+      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    }
+  }
+}
+
+TEST(BuiltinSceneOptions, LoadSceneRoutesOptionsToTheBuiltinScenes) {
+  const Scene s = ssr::load_scene("gallery:reflectors=3,normal_map=ripples");
+  EXPECT_EQ(s.reflectors.size(), 3u);
+  EXPECT_EQ(s.name, "gallery:reflectors=3,normal_map=ripples");
+  EXPECT_THROW(ssr::load_scene("gallery:reflectors=17"), ssr::InputError);
+  EXPECT_THROW(ssr::load_scene("cornell:reflectors=2"), ssr::InputError);
+  EXPECT_THROW(ssr::load_scene("gallery:"), ssr::InputError);
+  // builtin_scenes() still lists plain names; the gallery's description names its options.
+  for (const auto& info : ssr::builtin_scenes()) EXPECT_EQ(info.name.find(':'), std::string::npos);
+  const std::string& desc = ssr::builtin_scenes().front().description;
+  EXPECT_NE(desc.find("reflectors="), std::string::npos) << desc;
+  EXPECT_NE(desc.find("normal_map="), std::string::npos) << desc;
+}
