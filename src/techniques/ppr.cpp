@@ -29,8 +29,10 @@ class PprTechnique final : public TechniqueWithParams<P> {
   PprTechnique() : TechniqueWithParams("ppr", kTable) {}
 
   void load(const gl::ShaderSource& src) override {
+    auto clear = gl::Program::compute(src, "techniques/ppr_clear.comp");
     auto project = gl::Program::compute(src, "techniques/ppr_project.comp");
     auto resolve = gl::Program::compute(src, "techniques/ppr_resolve.comp");
+    clear_ = std::move(clear);
     project_ = std::move(project);
     resolve_ = std::move(resolve);
   }
@@ -63,13 +65,12 @@ class PprTechnique final : public TechniqueWithParams<P> {
 
     bind_params();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
+    glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     {
       gl::ScopedPass pass(in.timer, "ppr clear");
-      const GLuint empty = shared::PPR_EMPTY;
-      glClearTexImage(intermediate_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+      clear_.dispatch_2d(in.width, in.height);
     }
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     {
       gl::ScopedPass pass(in.timer, "ppr project");
       glProgramUniform1ui(project_.id(), 0, bits);
@@ -85,7 +86,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
   }
 
  private:
-  gl::Program project_, resolve_;
+  gl::Program clear_, project_, resolve_;
   gl::Texture2D intermediate_;
   gl::Buffer reflectors_;
 };

@@ -64,7 +64,8 @@ TEST(Program, EveryEmbeddedProgramCompiles) {
   for (const char* p : {"render/lighting.comp", "render/composite.comp", "render/display.comp",
                         "techniques/linear.comp", "techniques/none.comp", "eval/floor.comp",
                         "techniques/hiz.comp", "techniques/hiz_pyramid.comp",
-                        "reference/shade.comp", "reference/planar_resolve.comp"})
+                        "reference/shade.comp", "reference/planar_resolve.comp", "techniques/ppr_clear.comp",
+                        "techniques/ppr_project.comp", "techniques/ppr_resolve.comp"})
     EXPECT_NO_THROW(gl::Program::compute(embedded, p)) << p;
   EXPECT_NO_THROW(gl::Program::graphics(embedded, "render/gbuffer.vert", "render/gbuffer.frag"));
   test::expect_no_gl_errors();
