@@ -40,10 +40,10 @@ void require_dir(const std::string& file) {
   if (!fs::is_directory(dir)) throw InputError("output directory '" + dir.string() + "' does not exist.");
 }
 
-char fmt_buf[128];
-const char* fmt(const char* f, double v) {
-  std::snprintf(fmt_buf, sizeof fmt_buf, f, v);
-  return fmt_buf;
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
 }
 
 int run_compare(const CompareOptions& o) {
@@ -86,9 +86,10 @@ int run_compare(const CompareOptions& o) {
   for (const Variant& v : variants) {
     EvaluatedVariant ev = evaluate_variant(renderer, frame, camera, v, timing, floor_ms);
     const ErrorMetrics& e = ev.result.error;
-    std::string label = v.label() + "  " + fmt("%.2f ms ", ev.result.time_ms.median) + clock;
+    const std::string label = v.label() + "  " + fmt("%.2f ms ", ev.result.time_ms.median) + clock;
     top.push_back({label, to_rgba8(ev.score.display)});
-    bottom.push_back({std::string("diff vs truth, PSNR ") + fmt("%.1f dB", e.psnr), heat_map(ev.score.display, frame.truth(), frame.classes())});
+    bottom.push_back({"diff vs truth, PSNR " + fmt("%.1f dB", e.psnr),
+                      heat_map(ev.score.display, frame.truth(), frame.classes())});
     run.results.push_back(ev.result);
   }
   std::vector<GridTile> tiles = top;
