@@ -15,19 +15,6 @@ using namespace ssr;
 
 namespace {
 
-// Planar-reflector pixels (G-buffer reflector id > 0), row 0 = top like read-back images.
-std::vector<bool> planar_pixels(const Renderer& r) {
-  const int w = r.width(), h = r.height();
-  std::vector<std::uint8_t> m(static_cast<std::size_t>(w) * h * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(r.gbuffer().material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(m.size()), m.data());
-  std::vector<bool> out(static_cast<std::size_t>(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      out[static_cast<std::size_t>(h - 1 - y) * w + x] = m[(static_cast<std::size_t>(y) * w + x) * 4] > 0;
-  return out;
-}
 
 struct PlanarScore {
   double psnr_traceable = 0, coverage = 0;
@@ -41,7 +28,7 @@ PlanarScore score_on_planar(Renderer& r, ScoredFrame& frame, const std::string& 
   apply_assignments(*t, sets);
   t->load(r.shaders());
   const ScoredFrame::Score s = frame.score(*t);
-  const std::vector<bool> planar = planar_pixels(r);
+  const std::vector<bool> planar = test::planar_mask(r);
   std::vector<PixelClass> cls = frame.classes();
   for (std::size_t i = 0; i < cls.size(); ++i)
     if (!planar[i]) cls[i] = PixelClass::NotReflective;

@@ -13,21 +13,6 @@
 
 using namespace ssr;
 
-namespace {
-// Pixels of planar reflectors (G-buffer reflector id > 0), row 0 = top.
-std::vector<bool> planar_mask(const Renderer& r) {
-  const int w = r.width(), h = r.height();
-  std::vector<std::uint8_t> m(static_cast<std::size_t>(w) * h * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(r.gbuffer().material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(m.size()), m.data());
-  std::vector<bool> out(static_cast<std::size_t>(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      out[static_cast<std::size_t>(h - 1 - y) * w + x] = m[(static_cast<std::size_t>(y) * w + x) * 4] > 0;
-  return out;
-}
-}  // namespace
 
 // Two oracles: the mirrored-camera raster and the Embree ray tracer must agree on the planar
 // mirror of `gallery`. Tolerance: PSNR >= 45 dB over the mirror's pixels (tone-mapped [0,1]),
@@ -45,7 +30,7 @@ TEST(Reference, PlanarAgreesWithRayTracedMirror) {
     planar->load(r.shaders());
     ScoredFrame frame(r, scene.cameras[0], *reference);
     const ScoredFrame::Score s = frame.score(*planar);
-    const std::vector<bool> mask = planar_mask(r);
+    const std::vector<bool> mask = test::planar_mask(r);
     double sum = 0;
     std::size_t n = 0;
     for (std::size_t p = 0; p < mask.size(); ++p) {
