@@ -12,6 +12,16 @@ bool draw_param_panel(ParamSet& params) {
     ImGui::TextDisabled("(no parameters)");
     return false;
   }
+  bool all_default = true;
+  for (std::size_t i = 0; i < params.size(); ++i) all_default &= params.get(i) == params.get_default(i);
+  ImGui::BeginDisabled(all_default);
+  if (ImGui::SmallButton("reset all")) {
+    params.reset_all();
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("every parameter of %s back to its default", params.prefix().c_str());
   for (std::size_t i = 0; i < params.size(); ++i) {
     const ParamDesc& d = params.table()[i];
     ImGui::PushID(static_cast<int>(i));

@@ -6,7 +6,7 @@
 namespace ssr {
 
 // One widget per parameter (slider with the table's range, checkbox, or combo), the help text
-// as a tooltip, a reset button per parameter. Returns true when a value changed.
+// as a tooltip, a reset button per parameter and a 'reset all' button. Returns true when a value changed.
 bool draw_param_panel(ParamSet& params);
 
 }  // namespace ssr

@@ -1,0 +1,25 @@
+// Difference heat map for the viewer: |A - B| per pixel (mean over RGB of the display values),
+// scaled so that u_full_scale is the hottest colour. Pixels where A and B agree show A as a dim
+// grey, so that the picture keeps its context.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 20) uniform sampler2D a_tex;  // RGBA8 display image of technique A
+layout(binding = 21) uniform sampler2D b_tex;  // RGBA8 display image of technique B
+layout(binding = 3, rgba8) uniform writeonly image2D out_heat;
+layout(location = 0) uniform float u_full_scale;
+
+// Black -> purple -> orange -> yellow (as display.comp's debug heat maps).
+vec3 heat(float t) {
+  t = clamp(t, 0.0, 1.0);
+  return clamp(vec3(1.6 * t, 1.6 * t * t, 0.5 * sin(3.14159 * t) + 0.2 * t * t * t), 0.0, 1.0);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize(out_heat)))) return;
+  vec3 a = texelFetch(a_tex, p, 0).rgb;
+  vec3 b = texelFetch(b_tex, p, 0).rgb;
+  float d = dot(abs(a - b), vec3(1.0 / 3.0));
+  vec3 context = vec3(0.25 * dot(a, vec3(0.2126, 0.7152, 0.0722)));
+  vec3 shown = d > 0.0 ? max(heat(d / max(u_full_scale, 1e-4)), context * 0.5) : context;
+  imageStore(out_heat, p, vec4(shown, 1.0));
+}
