@@ -3,6 +3,8 @@
 // mirrored across the reflector's plane, with everything behind the mirror clipped away; each
 // pixel of that reflector then takes the colour its reflected ray sees in the mirrored image.
 // Mirror only: roughness is ignored, pixels off the reflectors get confidence 0.
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/renderer.h"
@@ -47,8 +49,11 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
       m.target = mirror_point(cam.target);
       m.up = cam.up - 2.0f * glm::dot(cam.up, n) * n;
       // Clip the mirror's own plane too (a hair in front of it), or the mirrored camera would
-      // see the reflector from behind.
-      const float eps = 1e-4f * (1.0f + glm::length(r.center));
+      // see the reflector from behind. The hair covers the float rounding of dot(plane, p) for
+      // points around the reflector (a few ulps of its coordinates), not more: a thicker slab
+      // would clip objects standing on the mirror.
+      const glm::vec3 ac = glm::abs(r.center);
+      const float eps = 1e-4f + 4e-7f * std::max({ac.x, ac.y, ac.z});
       mirror_->settings.clip_plane = glm::vec4(n, -glm::dot(n, r.center) - eps);
       mirror_->render_inputs(m, nullptr);
 

@@ -19,6 +19,9 @@
 //          ceiling, glossy metal floor (roughness 0.3, no planar reflector), two white boxes.
 // corridor 4 m wide, 3.5 m high, 40 m long, near-mirror floor (planar reflector 1, roughness
 //          0.05), pillars and coloured panels along both walls, 8 ceiling lights.
+// hard-*   stability scenes (issue 7): hard-grazing, hard-mirror-box, hard-thin,
+//          hard-depth-range, hard-far-origin, hard-degenerate, hard-roughness, hard-reflectors;
+//          described above their builders and in docs/ROBUSTNESS.md.
 //
 // Default-camera framing (16:9, fov_y 60, glm::lookAt + glm::perspective, NDC in [-1,1], +y up)
 // is worked out in the comments next to each camera and checked by tests/unit.
@@ -616,6 +619,284 @@ Scene glass() {
   return b.s;
 }
 
+// ---- hard cases ---------------------------------------------------------------------------------
+// Stability scenes for issue 7 (tests/gl/test_hard_cases.cpp runs every technique on each one's
+// default camera against the reference; docs/ROBUSTNESS.md lists what each exercises). Every one
+// has a mesh named "floor" that the default camera sees (tests/unit checks it), lights inside the
+// geometry's bounds and 2..4 cameras.
+
+void set_planes(Scene& s, float near_plane, float far_plane) {
+  for (Camera& c : s.cameras) {
+    c.near_plane = near_plane;
+    c.far_plane = far_plane;
+  }
+}
+
+// A planar reflector rectangle facing `normal` (unit) with `tangent` (unit, in the plane) and
+// the mesh that fills it exactly (a meshgen::plane turned so that +X -> tangent, +Y -> normal,
+// +Z -> bitangent). Returns the mesh index.
+std::size_t mirror_rect(Builder& b, const std::string& name, int material, glm::vec3 center,
+                        glm::vec3 normal, glm::vec3 tangent, glm::vec2 half_extents) {
+  Reflector r;
+  r.center = center;
+  r.tangent = tangent;
+  r.bitangent = glm::cross(tangent, normal);  // so that normal() = cross(bitangent, tangent)
+  r.half_extents = half_extents;
+  b.s.reflectors.push_back(r);
+  const int id = static_cast<int>(b.s.reflectors.size());
+  glm::mat4 xf(1.0f);
+  xf[0] = glm::vec4(tangent, 0.0f);
+  xf[1] = glm::vec4(normal, 0.0f);
+  xf[2] = glm::vec4(r.bitangent, 0.0f);
+  xf[3] = glm::vec4(center, 1.0f);
+  return b.mesh(meshgen::plane(2.0f * half_extents), name, material, xf, id);
+}
+
+// A few coloured props standing on y = 0 around (0, 0, z0), for something to reflect.
+void props(Builder& b, float z0) {
+  const int red = b.material(mat("prop_red", {0.8f, 0.1f, 0.08f}, 0.5f));
+  const int blue = b.material(mat("prop_blue", {0.12f, 0.25f, 0.85f}, 0.4f));
+  const int yellow = b.material(mat("prop_yellow", {0.9f, 0.75f, 0.2f}, 0.6f));
+  b.mesh(meshgen::box({1.0f, 1.0f, 1.0f}), "prop_box", red, translate({-1.8f, 0.5f, z0}) * rotate_y(20.0f));
+  b.mesh(meshgen::sphere(0.6f, 24, 12), "prop_sphere", blue, translate({1.5f, 0.6f, z0 - 1.0f}));
+  b.mesh(meshgen::box({0.6f, 2.0f, 0.6f}), "prop_tall", yellow, translate({0.2f, 1.0f, z0 - 3.0f}));
+}
+
+// Camera 5 cm above a 400 m mirror floor, looking along it: every floor pixel is grazing.
+Scene hard_grazing() {
+  Builder b;
+  b.s.name = "hard-grazing";
+  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", mirror, {0, 0, -150.0f}, {0, 1, 0}, {1, 0, 0}, {200.0f, 200.0f});
+  props(b, -4.0f);
+  const int wall = b.material(mat("far_wall", {0.6f, 0.6f, 0.55f}, 0.8f));
+  b.mesh(meshgen::box({30.0f, 6.0f, 0.5f}), "far_wall", wall, translate({0, 3.0f, -40.0f}));
+  b.light({0.0f, 3.0f, -2.0f}, glm::vec3(1.0f), 40.0f, 30.0f);
+  b.light({-3.0f, 2.0f, -10.0f}, {1.0f, 0.8f, 0.6f}, 40.0f, 30.0f);
+  b.camera("default", {0.0f, 0.05f, 2.0f}, {0.0f, 0.05f, -10.0f});
+  b.camera("skim", {0.0f, 0.01f, 2.0f}, {0.0f, 0.02f, -10.0f});   // 1 cm, looking a hair up
+  b.camera("shallow", {0.0f, 0.3f, 3.0f}, {0.0f, 0.0f, -30.0f});  // ~0.6 deg down
+  set_planes(b.s, 0.01f, 500.0f);
+  b.s.environment.type = Environment::Type::Sky;
+  b.s.ambient = 0.3f;
+  return b.s;
+}
+
+// Camera inside a closed 4 x 3 x 4 m box whose six faces are perfect mirrors (6 planar
+// reflectors): reflection rays come straight back at the camera and cross its near plane.
+Scene hard_mirror_box() {
+  Builder b;
+  b.s.name = "hard-mirror-box";
+  constexpr float hx = 2.0f, hz = 2.0f, H = 3.0f;
+  const int floor_mat = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  const int wall_mat = b.material(mat("mirror_wall", {0.85f, 0.9f, 0.95f}, 0.0f, 1.0f, 1.0f));
+  const int ceil_mat = b.material(mat("mirror_ceiling", {0.95f, 0.9f, 0.85f}, 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", floor_mat, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {hx, hz});
+  mirror_rect(b, "ceiling", ceil_mat, {0, H, 0}, {0, -1, 0}, {1, 0, 0}, {hx, hz});
+  mirror_rect(b, "wall_back", wall_mat, {0, 0.5f * H, -hz}, {0, 0, 1}, {1, 0, 0}, {hx, 0.5f * H});
+  mirror_rect(b, "wall_front", wall_mat, {0, 0.5f * H, hz}, {0, 0, -1}, {1, 0, 0}, {hx, 0.5f * H});
+  mirror_rect(b, "wall_left", wall_mat, {-hx, 0.5f * H, 0}, {1, 0, 0}, {0, 0, 1}, {hz, 0.5f * H});
+  mirror_rect(b, "wall_right", wall_mat, {hx, 0.5f * H, 0}, {-1, 0, 0}, {0, 0, 1}, {hz, 0.5f * H});
+  const int red = b.material(mat("red", {0.8f, 0.1f, 0.08f}, 0.5f));
+  const int green = b.material(mat("green", {0.15f, 0.65f, 0.25f}, 0.5f));
+  const int lamp = b.material(mat("lamp", glm::vec3(1.0f), 0.5f, 0.0f, 0.5f, {3.0f, 2.8f, 2.5f}));
+  b.mesh(meshgen::box({0.6f, 0.6f, 0.6f}), "cube_red", red, translate({-1.0f, 0.3f, -1.0f}) * rotate_y(30.0f));
+  b.mesh(meshgen::sphere(0.35f, 24, 12), "sphere_green", green, translate({1.0f, 0.8f, -0.6f}));
+  b.mesh(meshgen::sphere(0.1f, 12, 6), "lamp", lamp, translate({0.0f, 2.7f, 0.0f}));
+  b.light({0.0f, 2.5f, 0.0f}, {1.0f, 0.95f, 0.9f}, 15.0f, 10.0f);
+  // default: looking at the back wall, a little down; the wall's reflection rays run straight
+  // back through the camera. toward: square on, eye at mid height. corner: into a corner.
+  b.camera("default", {0.0f, 1.5f, 1.2f}, {0.0f, 1.0f, -2.0f});
+  b.camera("toward", {0.0f, 1.5f, 1.5f}, {0.0f, 1.5f, -2.0f});
+  b.camera("corner", {1.2f, 2.4f, 1.2f}, {-2.0f, 0.5f, -2.0f});
+  set_planes(b.s, 0.05f, 50.0f);
+  b.s.environment.type = Environment::Type::Constant;
+  b.s.environment.constant = glm::vec3(0.05f);
+  b.s.ambient = 1.0f;
+  return b.s;
+}
+
+// A 2 cm pole and 1 cm fins on a mirror floor: thinner than a pixel at the test sizes, so depth
+// buffers see them in a few pixels only and thickness heuristics decide what a ray hits.
+Scene hard_thin() {
+  Builder b;
+  b.s.name = "hard-thin";
+  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", mirror, {0, 0, -2.0f}, {0, 1, 0}, {1, 0, 0}, {10.0f, 10.0f});
+  const int pole = b.material(mat("pole", {0.9f, 0.15f, 0.1f}, 0.4f, 0.0f, 0.5f, {1.5f, 0.2f, 0.1f}));
+  const int fin = b.material(mat("fin", {0.15f, 0.5f, 0.9f}, 0.5f));
+  const int fin2 = b.material(mat("fin_edge_on", {0.2f, 0.8f, 0.3f}, 0.5f));
+  b.mesh(meshgen::box({0.02f, 3.0f, 0.02f}), "pole", pole, translate({-0.6f, 1.5f, -1.0f}));
+  for (int i = 0; i < 3; ++i)  // fins turned 0, 30, 60 degrees from facing the camera
+    b.mesh(meshgen::box({1.0f, 1.5f, 0.01f}), "fin_" + std::to_string(i), fin,
+           translate({0.6f + 1.3f * static_cast<float>(i), 0.75f, -1.5f}) *
+               rotate_y(30.0f * static_cast<float>(i)));
+  b.mesh(meshgen::box({0.01f, 1.5f, 1.5f}), "fin_edge_on", fin2, translate({-2.0f, 0.75f, -1.5f}));
+  const int wall = b.material(mat("back_wall", {0.7f, 0.68f, 0.62f}, 0.85f));
+  b.mesh(meshgen::box({20.0f, 5.0f, 0.2f}), "back_wall", wall, translate({0, 2.5f, -8.0f}));
+  b.light({0.0f, 3.0f, 1.0f}, glm::vec3(1.0f), 40.0f, 20.0f);
+  b.light({-3.0f, 2.0f, -4.0f}, {0.6f, 0.7f, 1.0f}, 20.0f, 15.0f);
+  b.camera("default", {0.0f, 1.2f, 5.0f}, {0.0f, 0.8f, 0.0f});
+  b.camera("close", {0.0f, 0.4f, 1.0f}, {-0.3f, 0.6f, -1.5f});
+  return b.s;
+}
+
+// near 0.001, far 1e5: a 2 cm ball 1 cm from the eye and blocks at 1, 10, 100, 1e3, 1e4 and
+// 5e4 m (each 10% of its distance across) on a 1.2e5 m mirror floor.
+Scene hard_depth_range() {
+  Builder b;
+  b.s.name = "hard-depth-range";
+  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", mirror, {0, 0, -5.0e4f}, {0, 1, 0}, {1, 0, 0}, {6.0e4f, 6.0e4f});
+  const glm::vec3 eye(0.0f, 1.0f, 0.0f);
+  const int near_mat = b.material(mat("near_ball", {0.9f, 0.2f, 0.6f}, 0.4f));
+  // 1 cm ahead, up and to the right of the view centre (the default camera looks along -Z).
+  b.mesh(meshgen::sphere(0.002f, 12, 6), "near_ball", near_mat, translate(eye + glm::vec3(0.004f, 0.002f, -0.01f)));
+  const float dist[] = {1.0f, 10.0f, 100.0f, 1.0e3f, 1.0e4f, 5.0e4f};
+  const glm::vec3 colors[] = {{0.8f, 0.1f, 0.1f}, {0.9f, 0.6f, 0.1f}, {0.8f, 0.8f, 0.1f},
+                              {0.1f, 0.7f, 0.2f}, {0.1f, 0.4f, 0.9f}, {0.6f, 0.2f, 0.8f}};
+  for (int i = 0; i < 6; ++i) {
+    const float d = dist[i], s = 0.1f * d;
+    const float side = (i % 2) ? 1.0f : -1.0f;  // alternate sides so none hides the next
+    const int m = b.material(mat("block_" + std::to_string(i), colors[i], 0.5f, 0.0f, 0.5f, 0.3f * colors[i]));
+    // The 1 m block floats at 0.85 m (on the floor it would be below the frame).
+    b.mesh(meshgen::box({s, s, s}), "block_" + std::to_string(i), m,
+           translate({side * 0.15f * d, i == 0 ? 0.85f : 0.5f * s, -d}));
+  }
+  b.light({0.0f, 1.0f, -0.5f}, glm::vec3(1.0f), 5.0f, 20.0f);
+  b.light({0.0f, 500.0f, -1000.0f}, glm::vec3(1.0f), 1.0e6f, 3.0e4f);
+  b.camera("default", eye, eye + glm::vec3(0.0f, -0.15f, -1.0f));
+  b.camera("far", {0.0f, 50.0f, 0.0f}, {0.0f, 0.0f, -2.0e4f});
+  set_planes(b.s, 0.001f, 1.0e5f);
+  b.s.environment.type = Environment::Type::Sky;
+  b.s.ambient = 0.4f;
+  return b.s;
+}
+
+// The gallery moved 1e4 m along +X and -Z (camera, lights, reflectors too): world-space
+// positions lose about 3 decimal digits of float precision.
+Scene hard_far_origin() {
+  Options opt{{"reflectors", "1"}, {"normal_map", "none"}};
+  Scene s = gallery(opt);
+  s.name = "hard-far-origin";
+  const glm::vec3 o(1.0e4f, 0.0f, -1.0e4f);
+  for (Mesh& m : s.meshes) meshgen::transform(m, translate(o));
+  for (Light& l : s.lights) l.position += o;
+  for (Camera& c : s.cameras) {
+    c.position += o;
+    c.target += o;
+  }
+  for (Reflector& r : s.reflectors) r.center += o;
+  return s;
+}
+
+// Degenerate normals and background: unit normals that disagree with their faces (lying in the
+// face, flipped, cancelling across a quad so they interpolate through zero), a zero-area
+// triangle, a sliver seen edge-on, all mirrors; a small floor and a view half full of sky.
+Scene hard_degenerate() {
+  Builder b;
+  b.s.name = "hard-degenerate";
+  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", mirror, {0, 0, -1.0f}, {0, 1, 0}, {1, 0, 0}, {4.0f, 4.0f});
+  const int chrome = b.material(mat("chrome", glm::vec3(0.95f), 0.0f, 1.0f, 1.0f));
+  const int glossy = b.material(mat("glossy", {0.8f, 0.3f, 0.2f}, 0.2f, 1.0f, 1.0f));
+  auto quad = [](glm::vec3 origin, glm::vec3 U, glm::vec3 V, const glm::vec3 normals[4]) {
+    Mesh m;
+    const glm::vec4 t(glm::normalize(U), 1.0f);
+    const glm::vec2 st[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 4; ++i)
+      m.vertices.push_back(Vertex{origin + st[i].x * U + st[i].y * V, normals[i], st[i], t});
+    m.indices = {0, 1, 2, 0, 2, 3};
+    return m;
+  };
+  // A vertical 1.2 m quad facing the camera (+Z) whose normals lie in the face (+X).
+  const glm::vec3 in_face[4] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  b.mesh(quad({-2.6f, 0.3f, -1.0f}, {1.2f, 0, 0}, {0, 1.2f, 0}, in_face), "normals_in_face", chrome);
+  // Facing the camera with normals pointing away from it (-Z).
+  const glm::vec3 flipped[4] = {{0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
+  b.mesh(quad({-1.0f, 0.3f, -1.5f}, {1.2f, 0, 0}, {0, 1.2f, 0}, flipped), "normals_flipped", chrome);
+  // Left and right edges have opposite normals (-X, +X): the interpolated normal passes
+  // through zero down the middle of the quad.
+  const glm::vec3 cancel[4] = {{-1, 0, 0}, {1, 0, 0}, {1, 0, 0}, {-1, 0, 0}};
+  b.mesh(quad({0.6f, 0.3f, -1.2f}, {1.2f, 0, 0}, {0, 1.2f, 0}, cancel), "normals_cancel", glossy);
+  // A zero-area triangle (collinear corners) next to a proper one, in one mesh.
+  {
+    Mesh m;
+    const glm::vec3 n(0, 0, 1);
+    const glm::vec4 t(1, 0, 0, 1);
+    m.vertices = {Vertex{{2.2f, 0.3f, -1.0f}, n, {0, 0}, t}, Vertex{{2.8f, 0.3f, -1.0f}, n, {1, 0}, t},
+                  Vertex{{3.4f, 0.3f, -1.0f}, n, {2, 0}, t}, Vertex{{2.8f, 1.3f, -1.0f}, n, {1, 1}, t}};
+    m.indices = {0, 1, 2, 0, 1, 3};
+    b.mesh(std::move(m), "zero_area", glossy);
+  }
+  // A 3 m sliver in the plane x = 0.3, seen almost exactly edge-on by the default camera.
+  b.mesh(meshgen::plane({0.5f, 3.0f}), "sliver", chrome,
+         translate({0.3f, 1.2f, -2.0f}) * rotate_y(2.0f) * rotate_z(-90.0f));
+  // A 4 m column at the back left (the only thing above the horizon).
+  b.mesh(meshgen::cylinder(0.15f, 4.0f, 16), "column", b.material(mat("column", {0.8f, 0.78f, 0.7f}, 0.5f)),
+         translate({-3.5f, 0.0f, -4.5f}));
+  b.light({0.0f, 2.5f, 1.0f}, glm::vec3(1.0f), 30.0f, 20.0f);
+  b.light({-2.0f, 1.5f, -3.0f}, {0.7f, 0.8f, 1.0f}, 15.0f, 12.0f);
+  // default: eye 1.5 m, level: the upper half of the frame and the band beyond the floor's
+  // far edge are sky. up: looking 35 deg up, almost nothing but sky.
+  b.camera("default", {0.3f, 1.5f, 4.0f}, {0.3f, 1.5f, -4.0f});
+  b.camera("up", {0.0f, 1.0f, 4.0f}, {0.0f, 6.6f, -4.0f});
+  b.s.environment.type = Environment::Type::Sky;
+  b.s.ambient = 0.3f;
+  return b.s;
+}
+
+// A metal floor split down x = 0: roughness exactly 0 on the left ("floor", reflector 1) and
+// exactly 1 on the right ("floor_rough", reflector 2): the two ends of the GGX lobe.
+Scene hard_roughness() {
+  Builder b;
+  b.s.name = "hard-roughness";
+  const int smooth = b.material(mat("metal_r0", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  const int rough = b.material(mat("metal_r1", glm::vec3(0.9f), 1.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", smooth, {-5.0f, 0, -2.0f}, {0, 1, 0}, {1, 0, 0}, {5.0f, 8.0f});
+  mirror_rect(b, "floor_rough", rough, {5.0f, 0, -2.0f}, {0, 1, 0}, {1, 0, 0}, {5.0f, 8.0f});
+  props(b, -2.0f);
+  const int emissive = b.material(mat("glow", {1.0f, 1.0f, 1.0f}, 0.5f, 0.0f, 0.5f, {3.0f, 2.5f, 1.5f}));
+  b.mesh(meshgen::sphere(0.3f, 16, 8), "glow_left", emissive, translate({-2.5f, 0.3f, 0.5f}));
+  b.mesh(meshgen::sphere(0.3f, 16, 8), "glow_right", emissive, translate({2.5f, 0.3f, 0.5f}));
+  const int wall = b.material(mat("back_wall", {0.7f, 0.6f, 0.5f}, 0.9f));
+  b.mesh(meshgen::box({20.0f, 4.0f, 0.2f}), "back_wall", wall, translate({0, 2.0f, -10.0f}));
+  b.light({0.0f, 3.0f, 2.0f}, glm::vec3(1.0f), 40.0f, 25.0f);
+  b.light({-3.0f, 2.0f, -4.0f}, {1.0f, 0.7f, 0.5f}, 30.0f, 20.0f);
+  b.light({3.0f, 2.0f, -4.0f}, {0.5f, 0.7f, 1.0f}, 30.0f, 20.0f);
+  // The split line x = 0 runs up the frame just right of the centre.
+  b.camera("default", {-0.25f, 1.6f, 6.0f}, {-0.25f, 0.6f, 0.0f});
+  b.camera("low", {-0.25f, 0.4f, 6.0f}, {-0.25f, 0.5f, 0.0f});
+  return b.s;
+}
+
+// Planar reflectors seen edge-on by the default camera (a horizontal mirror at eye height and a
+// vertical one in the plane x = 0 through the eye), one at a grazing angle, and one behind the
+// camera facing the scene, all on a mirror floor (5 reflectors).
+Scene hard_reflectors() {
+  Builder b;
+  b.s.name = "hard-reflectors";
+  const glm::vec3 eye(0.0f, 1.5f, 6.0f);
+  const int mirror = b.material(mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f));
+  const int glass = b.material(mat("wall_mirror", glm::vec3(0.95f), 0.0f, 1.0f, 1.0f));
+  mirror_rect(b, "floor", mirror, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {8.0f, 10.0f});
+  mirror_rect(b, "mirror_eye_level", glass, {-2.0f, eye.y, -2.5f}, {0, 1, 0}, {1, 0, 0}, {1.0f, 1.5f});
+  mirror_rect(b, "mirror_edge_on", glass, {0.0f, 1.7f, -3.5f}, {1, 0, 0}, {0, 0, 1}, {1.5f, 0.7f});
+  mirror_rect(b, "mirror_grazing", glass, {4.0f, 1.5f, -2.0f},
+              glm::normalize(glm::vec3(-1.0f, 0.0f, 0.05f)), glm::normalize(glm::vec3(0.05f, 0.0f, 1.0f)),
+              {3.0f, 1.5f});
+  mirror_rect(b, "mirror_behind", glass, {0.0f, 1.5f, 8.0f}, {0, 0, -1}, {1, 0, 0}, {3.0f, 1.5f});
+  props(b, -3.0f);
+  const int wall = b.material(mat("back_wall", {0.65f, 0.65f, 0.7f}, 0.85f));
+  b.mesh(meshgen::box({16.0f, 4.0f, 0.2f}), "back_wall", wall, translate({0, 2.0f, -10.0f}));
+  b.light({0.0f, 3.0f, 2.0f}, glm::vec3(1.0f), 40.0f, 25.0f);
+  b.light({-3.0f, 2.5f, -5.0f}, {1.0f, 0.8f, 0.6f}, 30.0f, 20.0f);
+  b.camera("default", eye, {0.0f, 1.5f, 0.0f});                 // level: both edge-on mirrors
+  b.camera("turned", {0.0f, 1.5f, 2.0f}, {0.0f, 1.3f, 8.0f});   // facing the mirror behind
+  b.camera("high", {0.0f, 4.0f, 7.0f}, {0.0f, 0.0f, -3.0f});
+  return b.s;
+}
+
 struct Entry {
   BuiltinSceneInfo info;
   std::vector<OptionSpec> options;
@@ -644,6 +925,37 @@ const std::vector<Entry>& entries() {
       {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
        {},
        [](const Options&) { return glass(); }},
+      // Hard cases (issue 7): see the comments above each builder and docs/ROBUSTNESS.md.
+      {{"hard-grazing", "hard case: camera 5 cm above a 400 m mirror floor, looking along it"},
+       {},
+       [](const Options&) { return hard_grazing(); }},
+      {{"hard-mirror-box",
+        "hard case: camera inside a closed box of six mirrors (rays back at the camera, through "
+        "the near plane)"},
+       {},
+       [](const Options&) { return hard_mirror_box(); }},
+      {{"hard-thin", "hard case: a 2 cm pole and 1 cm fins standing on a mirror floor"},
+       {},
+       [](const Options&) { return hard_thin(); }},
+      {{"hard-depth-range",
+        "hard case: near 0.001, far 1e5, objects from 0.01 to 5e4 m on a mirror floor"},
+       {},
+       [](const Options&) { return hard_depth_range(); }},
+      {{"hard-far-origin", "hard case: the gallery moved 1e4 m from the origin (camera too)"},
+       {},
+       [](const Options&) { return hard_far_origin(); }},
+      {{"hard-degenerate",
+        "hard case: normals in the face, flipped and cancelling, a zero-area triangle, an "
+        "edge-on sliver, much sky"},
+       {},
+       [](const Options&) { return hard_degenerate(); }},
+      {{"hard-roughness", "hard case: a metal floor split into roughness exactly 0 and exactly 1"},
+       {},
+       [](const Options&) { return hard_roughness(); }},
+      {{"hard-reflectors",
+        "hard case: planar mirrors seen edge-on by the default camera, one grazing, one behind it"},
+       {},
+       [](const Options&) { return hard_reflectors(); }},
   };
   return list;
 }

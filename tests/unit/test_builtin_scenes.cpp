@@ -2,6 +2,7 @@
 // cover their meshes, named default cameras, the gallery's marker in view with its reflection).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
@@ -93,11 +94,19 @@ void check_reflector_meshes(const Scene& s) {
 
 TEST(BuiltinScenes, ListsTheScenesWithGalleryFirst) {
   const auto& list = ssr::builtin_scenes();
-  ASSERT_EQ(list.size(), 4u);
+  ASSERT_EQ(list.size(), 12u);
   EXPECT_EQ(list[0].name, "gallery");
   EXPECT_EQ(list[1].name, "cornell");
   EXPECT_EQ(list[2].name, "corridor");
   EXPECT_EQ(list[3].name, "glass");
+  EXPECT_EQ(list[4].name, "hard-grazing");
+  EXPECT_EQ(list[5].name, "hard-mirror-box");
+  EXPECT_EQ(list[6].name, "hard-thin");
+  EXPECT_EQ(list[7].name, "hard-depth-range");
+  EXPECT_EQ(list[8].name, "hard-far-origin");
+  EXPECT_EQ(list[9].name, "hard-degenerate");
+  EXPECT_EQ(list[10].name, "hard-roughness");
+  EXPECT_EQ(list[11].name, "hard-reflectors");
   for (const auto& info : list) EXPECT_FALSE(info.description.empty()) << info.name;
 }
 
@@ -239,11 +248,13 @@ TEST(BuiltinScenes, DefaultCamerasSeeTheReflectiveFloor) {
     SCOPED_TRACE(info.name);
     const Scene s = ssr::make_builtin_scene(info.name);
     const ssr::Camera& cam = s.cameras[0];
-    const glm::mat4 inv = glm::inverse(
-        glm::perspective(glm::radians(cam.fov_y_deg), 16.0f / 9.0f, cam.near_plane, cam.far_plane) *
-        glm::lookAt(cam.position, cam.target, cam.up));
-    const glm::vec4 far_h = inv * glm::vec4(0.0f, -0.6f, 1.0f, 1.0f);
-    const glm::vec3 dir = glm::normalize(glm::vec3(far_h) / far_h.w - cam.position);
+    // In double: hard-depth-range's far / near = 1e8 leaves a float inverse without precision.
+    const glm::dmat4 inv = glm::inverse(
+        glm::perspective(glm::radians(double(cam.fov_y_deg)), 16.0 / 9.0, double(cam.near_plane),
+                         double(cam.far_plane)) *
+        glm::lookAt(glm::dvec3(cam.position), glm::dvec3(cam.target), glm::dvec3(cam.up)));
+    const glm::dvec4 far_h = inv * glm::dvec4(0.0, -0.6, 1.0, 1.0);
+    const glm::vec3 dir = glm::normalize(glm::vec3(glm::dvec3(far_h) / far_h.w - glm::dvec3(cam.position)));
     ASSERT_LT(dir.y, 0.0f);
     const glm::vec3 hit = cam.position + dir * (cam.position.y / -dir.y);
     const Mesh* floor = find_mesh(s, "floor");
@@ -555,4 +566,119 @@ TEST(BuiltinSceneOptions, LoadSceneRoutesOptionsToTheBuiltinScenes) {
   const std::string& desc = ssr::builtin_scenes().front().description;
   EXPECT_NE(desc.find("reflectors="), std::string::npos) << desc;
   EXPECT_NE(desc.find("normal_map="), std::string::npos) << desc;
+}
+
+// The hard cases (issue 7): each validates and keeps the promise its description makes.
+TEST(BuiltinHardScenes, EveryHardSceneValidatesAndKeepsItsPromise) {
+  int n = 0;
+  for (const auto& info : ssr::builtin_scenes()) {
+    if (info.name.rfind("hard-", 0) != 0) continue;
+    ++n;
+    SCOPED_TRACE(info.name);
+    const Scene s = ssr::make_builtin_scene(info.name);
+    EXPECT_NO_THROW(ssr::validate(s));
+    EXPECT_EQ(s.cameras.at(0).name, "default");
+    check_reflector_meshes(s);
+  }
+  EXPECT_EQ(n, 8);
+
+  {
+    const Scene s = ssr::make_builtin_scene("hard-grazing");
+    EXPECT_NEAR(s.cameras[0].position.y, 0.05f, 1e-6f);
+    EXPECT_NEAR(s.cameras[0].target.y, 0.05f, 1e-6f);  // looking along the floor
+    ASSERT_NE(find_mesh(s, "floor"), nullptr);
+    EXPECT_GE(s.reflectors.at(0).half_extents.x, 100.0f);
+  }
+  {
+    // The camera is inside a box closed on all six sides by mirror reflectors.
+    const Scene s = ssr::make_builtin_scene("hard-mirror-box");
+    EXPECT_EQ(s.reflectors.size(), 6u);
+    const glm::vec3 eye = s.cameras[0].position;
+    for (const ssr::Reflector& r : s.reflectors) EXPECT_GT(glm::dot(eye - r.center, r.normal()), 0.0f);
+    for (const glm::vec3 dir : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0),
+                                glm::vec3(0, -1, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)})
+      EXPECT_TRUE(segment_blocked(s, eye, eye + 10.0f * dir, {})) << dir.x << dir.y << dir.z;
+  }
+  {
+    const Scene s = ssr::make_builtin_scene("hard-thin");
+    glm::vec3 lo, hi;
+    ASSERT_NE(find_mesh(s, "pole"), nullptr);
+    bounds(*find_mesh(s, "pole"), lo, hi);
+    EXPECT_NEAR(hi.x - lo.x, 0.02f, 1e-4f);
+    ASSERT_NE(find_mesh(s, "fin_0"), nullptr);
+    bounds(*find_mesh(s, "fin_0"), lo, hi);
+    EXPECT_NEAR(hi.z - lo.z, 0.01f, 1e-4f);
+  }
+  {
+    const Scene s = ssr::make_builtin_scene("hard-depth-range");
+    EXPECT_FLOAT_EQ(s.cameras[0].near_plane, 0.001f);
+    EXPECT_FLOAT_EQ(s.cameras[0].far_plane, 1.0e5f);
+    // Something 1 cm from the eye and something 5e4 m away, both in the default view.
+    float nearest = 1e30f, farthest = 0.0f;
+    for (const Mesh& m : s.meshes) {
+      if (m.name == "floor") continue;
+      glm::vec3 lo, hi;
+      bounds(m, lo, hi);
+      const glm::vec3 c = 0.5f * (lo + hi);
+      const auto ndc = to_ndc(s.cameras[0], c);
+      ASSERT_TRUE(ndc.has_value()) << m.name;
+      EXPECT_LT(std::abs(ndc->x), 1.0f) << m.name;
+      EXPECT_LT(std::abs(ndc->y), 1.0f) << m.name;
+      const float d = glm::distance(c, s.cameras[0].position);
+      nearest = std::min(nearest, d);
+      farthest = std::max(farthest, d);
+    }
+    EXPECT_LT(nearest, 0.02f);
+    EXPECT_GT(farthest, 4.9e4f);
+  }
+  {
+    const Scene far = ssr::make_builtin_scene("hard-far-origin");
+    const Scene near = ssr::make_builtin_scene("gallery");
+    ASSERT_EQ(far.meshes.size(), near.meshes.size());
+    EXPECT_GE(glm::length(far.cameras[0].position), 1.0e4f);
+    const glm::vec3 off = far.cameras[0].position - near.cameras[0].position;
+    EXPECT_GE(glm::length(off), 1.0e4f);
+    EXPECT_NEAR(glm::length(far.reflectors[0].center - near.reflectors[0].center - off), 0.0f, 1e-2f);
+  }
+  {
+    // Unit normals that disagree with their faces; a zero-area triangle.
+    const Scene s = ssr::make_builtin_scene("hard-degenerate");
+    for (const char* name : {"normals_in_face", "normals_flipped", "normals_cancel", "zero_area"}) {
+      const Mesh* m = find_mesh(s, name);
+      ASSERT_NE(m, nullptr) << name;
+      const glm::vec3 face = glm::cross(m->vertices[m->indices[1]].position - m->vertices[m->indices[0]].position,
+                                        m->vertices[m->indices[2]].position - m->vertices[m->indices[0]].position);
+      if (std::string(name) == "zero_area") {
+        EXPECT_EQ(glm::length(face), 0.0f);
+        continue;
+      }
+      bool disagrees = false;
+      for (const ssr::Vertex& v : m->vertices)
+        disagrees |= glm::dot(v.normal, glm::normalize(face)) < 0.5f;
+      EXPECT_TRUE(disagrees) << name;
+    }
+  }
+  {
+    const Scene s = ssr::make_builtin_scene("hard-roughness");
+    std::set<float> r;
+    for (const Mesh& m : s.meshes)
+      if (m.reflector > 0) {
+        r.insert(s.materials[m.material].roughness);
+        EXPECT_EQ(s.materials[m.material].metallic, 1.0f);
+      }
+    EXPECT_EQ(r, (std::set<float>{0.0f, 1.0f}));
+  }
+  {
+    // Two reflectors contain the default eye (edge-on) and one is behind it.
+    const Scene s = ssr::make_builtin_scene("hard-reflectors");
+    const ssr::Camera& c = s.cameras[0];
+    const glm::vec3 fwd = glm::normalize(c.target - c.position);
+    int edge_on = 0, behind = 0;
+    for (const ssr::Reflector& r : s.reflectors) {
+      edge_on += std::abs(glm::dot(c.position - r.center, r.normal())) < 1e-5f;
+      behind += glm::dot(r.center - c.position, fwd) < 0.0f;
+    }
+    EXPECT_EQ(edge_on, 2);
+    EXPECT_EQ(behind, 1);
+  }
 }

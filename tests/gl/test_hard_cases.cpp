@@ -1,0 +1,196 @@
+// The hard-case matrix (issue 7, items 1-2): every technique except `reference` on every
+// built-in `hard-*` scene (default camera, 96x54) against the reference (64 samples per rough
+// pixel): no non-finite value in the reflection or the final colour, PSNR over the reflective
+// pixels at or above the floor written for that case in kHardTolerances, and no GL error
+// (the GL test main turns the KHR_debug callback on). Then odd, tiny and large frame sizes on
+// `gallery` for every technique: finite output and no GL error.
+//
+// The measured figures in the table's comments come from llvmpipe (LLVM 15.0.6) on 2 cores:
+// `ssrlab_gl_tests --gtest_filter='Hard*'` prints one "hard-case" line per cell; the same
+// figures are in docs/ROBUSTNESS.md. Each floor is the measurement minus 3 dB, rounded down to
+// 0.5 dB, never below 5 dB. A technique or hard-* scene without a row fails the test.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/cli_common.h"
+#include "gl_test_env.h"
+#include "render/renderer.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/technique.h"
+#include "tracer_test_util.h"
+
+using namespace ssr;
+
+namespace {
+
+constexpr int kW = 96, kH = 54;
+
+struct Tolerance {
+  const char* scene;
+  const char* technique;
+  double min_psnr;  // dB over the reflective pixels vs the reference; measured value in the comment
+};
+
+// clang-format off
+const std::vector<Tolerance> kHardTolerances = {
+    // gallery (baseline, not a hard case)
+    {"gallery", "none", 5.5},                       // measured 8.89 dB
+    {"gallery", "linear", 14.0},                    // measured 17.25 dB
+    {"gallery", "linear-binary", 7.0},              // measured 10.12 dB
+    {"gallery", "dda", 13.0},                       // measured 16.19 dB
+    {"gallery", "hiz", 13.0},                       // measured 16.17 dB
+    {"gallery", "ppr", 12.5},                       // measured 15.97 dB
+    {"gallery", "planar", 23.5},                    // measured 26.78 dB
+    // hard-grazing
+    {"hard-grazing", "none", 14.5},                 // measured 17.91 dB
+    {"hard-grazing", "linear", 16.5},               // measured 19.67 dB
+    {"hard-grazing", "linear-binary", 16.0},        // measured 19.20 dB
+    {"hard-grazing", "dda", 24.5},                  // measured 27.72 dB
+    {"hard-grazing", "hiz", 24.5},                  // measured 27.72 dB
+    {"hard-grazing", "ppr", 23.5},                  // measured 26.65 dB
+    {"hard-grazing", "planar", 65.5},               // measured 68.66 dB
+    // hard-mirror-box
+    {"hard-mirror-box", "none", 8.5},               // measured 11.88 dB
+    {"hard-mirror-box", "linear", 7.5},             // measured 10.85 dB
+    {"hard-mirror-box", "linear-binary", 8.5},      // measured 11.65 dB
+    {"hard-mirror-box", "dda", 7.5},                // measured 10.87 dB
+    {"hard-mirror-box", "hiz", 7.5},                // measured 10.87 dB
+    {"hard-mirror-box", "ppr", 7.5},                // measured 10.84 dB
+    {"hard-mirror-box", "planar", 69.0},            // measured 72.46 dB
+    // hard-thin
+    {"hard-thin", "none", 10.0},                    // measured 13.17 dB
+    {"hard-thin", "linear", 26.0},                  // measured 29.18 dB
+    {"hard-thin", "linear-binary", 11.5},           // measured 14.65 dB
+    {"hard-thin", "dda", 25.5},                     // measured 28.56 dB
+    {"hard-thin", "hiz", 26.0},                     // measured 29.10 dB
+    {"hard-thin", "ppr", 20.5},                     // measured 23.79 dB
+    {"hard-thin", "planar", 64.0},                  // measured 67.37 dB
+    // hard-depth-range
+    {"hard-depth-range", "none", 24.0},             // measured 27.43 dB
+    {"hard-depth-range", "linear", 28.0},           // measured 31.10 dB
+    {"hard-depth-range", "linear-binary", 27.0},    // measured 30.01 dB
+    {"hard-depth-range", "dda", 28.0},              // measured 31.16 dB
+    {"hard-depth-range", "hiz", 28.0},              // measured 31.16 dB
+    {"hard-depth-range", "ppr", 24.5},              // measured 27.79 dB
+    {"hard-depth-range", "planar", 78.0},           // measured 81.22 dB
+    // hard-far-origin
+    {"hard-far-origin", "none", 5.5},               // measured 8.91 dB
+    {"hard-far-origin", "linear", 13.5},            // measured 16.83 dB
+    {"hard-far-origin", "linear-binary", 7.0},      // measured 10.08 dB
+    {"hard-far-origin", "dda", 12.5},               // measured 15.83 dB
+    {"hard-far-origin", "hiz", 12.5},               // measured 15.82 dB
+    {"hard-far-origin", "ppr", 12.5},               // measured 15.66 dB
+    {"hard-far-origin", "planar", 20.5},            // measured 23.84 dB
+    // hard-degenerate
+    {"hard-degenerate", "none", 5.5},               // measured 8.52 dB
+    {"hard-degenerate", "linear", 10.5},            // measured 13.74 dB
+    {"hard-degenerate", "linear-binary", 8.5},      // measured 11.73 dB
+    {"hard-degenerate", "dda", 8.0},                // measured 11.47 dB
+    {"hard-degenerate", "hiz", 9.5},                // measured 12.91 dB
+    {"hard-degenerate", "ppr", 9.0},                // measured 12.06 dB
+    {"hard-degenerate", "planar", 11.0},            // measured 14.23 dB
+    // hard-roughness
+    {"hard-roughness", "none", 17.0},               // measured 20.26 dB
+    {"hard-roughness", "linear", 27.0},             // measured 30.27 dB
+    {"hard-roughness", "linear-binary", 19.5},      // measured 22.82 dB
+    {"hard-roughness", "dda", 27.5},                // measured 30.99 dB
+    {"hard-roughness", "hiz", 27.5},                // measured 30.91 dB
+    {"hard-roughness", "ppr", 23.5},                // measured 26.52 dB
+    {"hard-roughness", "planar", 30.0},             // measured 33.22 dB
+    // hard-reflectors
+    {"hard-reflectors", "none", 5.0},               // measured 8.26 dB
+    {"hard-reflectors", "linear", 12.5},            // measured 15.66 dB
+    {"hard-reflectors", "linear-binary", 7.5},      // measured 10.86 dB
+    {"hard-reflectors", "dda", 12.5},               // measured 15.90 dB
+    {"hard-reflectors", "hiz", 12.5},               // measured 15.90 dB
+    {"hard-reflectors", "ppr", 12.5},               // measured 15.50 dB
+    {"hard-reflectors", "planar", 25.0},            // measured 28.20 dB
+};
+// clang-format on
+
+const Tolerance* find_tolerance(const std::string& scene, const std::string& technique) {
+  for (const Tolerance& t : kHardTolerances)
+    if (scene == t.scene && technique == t.technique) return &t;
+  return nullptr;
+}
+
+// The hard-* scenes, after `gallery` as a baseline (hard-far-origin is the gallery moved).
+std::vector<std::string> hard_scenes() {
+  std::vector<std::string> v = {"gallery"};
+  for (const BuiltinSceneInfo& s : builtin_scenes())
+    if (s.name.rfind("hard-", 0) == 0) v.push_back(s.name);
+  return v;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+TEST(HardCases, EveryTechniqueOnEveryHardSceneIsFiniteAndBounded) {
+  const std::vector<std::string> scenes = hard_scenes();
+  ASSERT_EQ(scenes.size(), 9u);  // gallery + 8 hard cases
+  for (const std::string& scene : scenes) {
+    for (const TechniqueInfo& t : technique_registry()) {
+      if (t.name == "reference") continue;
+      const auto t0 = std::chrono::steady_clock::now();
+      const auto s = test::score_technique(scene, kW, kH, t.name, {});
+      std::printf("hard-case %-17s %-14s psnr %6.2f dB  nonfinite %zu  reflective %zu  (%.2f s)\n",
+                  scene.c_str(), t.name.c_str(), s.error.psnr, s.error.nonfinite, s.error.reflective,
+                  seconds_since(t0));
+      EXPECT_EQ(s.error.nonfinite, 0u) << scene << " / " << t.name;
+      const Tolerance* tol = find_tolerance(scene, t.name);
+      if (!tol) {
+        ADD_FAILURE() << "no tolerance for " << scene << " / " << t.name
+                      << " in kHardTolerances: measure it and add a row (measured "
+                      << s.error.psnr << " dB)";
+        continue;
+      }
+      EXPECT_GE(tol->min_psnr, 5.0) << "floors never go below 5 dB";
+      EXPECT_GE(s.error.psnr, tol->min_psnr) << scene << " / " << t.name;
+      test::expect_no_gl_errors();
+    }
+  }
+  test::expect_no_gl_errors();
+}
+
+// Renders every technique (the reference with few samples) on the gallery at w x h and checks
+// that the lit, reflection and final images are finite.
+void expect_finite_at(Renderer& r, const Scene& scene, int w, int h) {
+  r.resize(w, h);
+  for (const TechniqueInfo& t : technique_registry()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto tech = t.create();
+    if (t.name == "reference") apply_assignments(*tech, {"reference.samples=4"});
+    tech->load(r.shaders());
+    r.render(scene.cameras[0], *tech, ViewMode::Final, nullptr);
+    for (const gl::Texture2D* target : {&r.lit(), &r.reflection(), &r.color()})
+      EXPECT_EQ(test::count_nonfinite(r.read_texture(*target)), 0u) << w << "x" << h << " " << t.name;
+    const RgbaImage8 disp = r.read_display();
+    EXPECT_EQ(disp.pixels.size(), static_cast<std::size_t>(w) * h * 4) << w << "x" << h << " " << t.name;
+    std::printf("hard-size %dx%d %-14s finite (%.2f s)\n", w, h, t.name.c_str(), seconds_since(t0));
+    test::expect_no_gl_errors();
+  }
+}
+
+TEST(HardSizes, OddTinyAndLargeFramesStayFinite) {
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, 1, 1);
+  for (auto [w, h] : {std::pair{1, 1}, {3, 7}, {1921, 1081}}) expect_finite_at(r, scene, w, h);
+  test::expect_no_gl_errors();
+}
+
+// 7680x4320 (8K): too slow for CI on llvmpipe (see docs/ROBUSTNESS.md); run it by hand with
+// --gtest_also_run_disabled_tests --gtest_filter='HardSizes.*'.
+TEST(HardSizes, DISABLED_Frame8KStaysFinite) {
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, 1, 1);
+  expect_finite_at(r, scene, 7680, 4320);
+  test::expect_no_gl_errors();
+}
