@@ -18,7 +18,7 @@ namespace {
 
 int list_scenes() {
   std::printf("built-in scenes:\n");
-  for (const auto& s : builtin_scenes()) std::printf("  %-12s %s\n", s.name.c_str(), s.description.c_str());
+  for (const auto& s : builtin_scenes()) std::printf("  %-18s %s\n", s.name.c_str(), s.description.c_str());
   const fs::path dir = fs::path(SSRLAB_ASSET_DIR) / "scenes";
   std::error_code ec;
   if (fs::is_directory(dir, ec)) {
