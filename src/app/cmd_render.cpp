@@ -9,6 +9,7 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "eval/grid.h"
+#include "eval/metrics.h"
 #include "reference/reference.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
@@ -43,12 +44,6 @@ struct RenderOptions {
   std::string shader_dir;
   float exposure = 0.0f;
 };
-
-std::size_t count_nonfinite_values(const std::vector<float>& v) {
-  std::size_t n = 0;
-  for (float x : v) n += !std::isfinite(x);
-  return n;
-}
 
 int run_render(const RenderOptions& o) {
   // Validate every input before any GL work or file is touched.
@@ -90,8 +85,8 @@ int run_render(const RenderOptions& o) {
   timer.end_frame();
   timer.flush();
 
-  const std::size_t bad = count_nonfinite_values(renderer.read_texture(renderer.reflection()).pixels) +
-                          count_nonfinite_values(renderer.read_texture(renderer.color()).pixels);
+  const std::size_t bad = count_nonfinite(renderer.read_texture(renderer.reflection()).pixels) +
+                          count_nonfinite(renderer.read_texture(renderer.color()).pixels);
   if (classes_view) {
     if (format != ImageFormat::Png) throw InputError("--view classes writes a .png.");
     write_png(o.out, class_map(*reference_outputs(*technique).classes, w, h));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gl/context.h"
+#include "eval/metrics.h"
 #include "render/renderer.h"
 
 namespace ssr::test {
@@ -18,11 +19,7 @@ inline void expect_no_gl_errors() {
   for (const std::string& e : gl::take_gl_errors()) ADD_FAILURE() << "GL error: " << e;
 }
 
-inline std::size_t count_nonfinite(const RgbaImageF& im) {
-  std::size_t n = 0;
-  for (float v : im.pixels) n += !std::isfinite(v);
-  return n;
-}
+inline std::size_t count_nonfinite(const RgbaImageF& im) { return ssr::count_nonfinite(im.pixels); }
 
 // Texel (x, y) with y = 0 the top row.
 inline const float* texel(const RgbaImageF& im, int x, int y) {

@@ -15,6 +15,19 @@ using namespace ssr;
 
 namespace {
 
+// A built-in scene's default view at 320x180 with its ground truth (reference, 16 samples).
+struct GalleryFrame {
+  explicit GalleryFrame(const std::string& name)
+      : scene(make_builtin_scene(name)), renderer(scene, 320, 180), reference(create_technique("reference")) {
+    apply_assignments(*reference, {"reference.samples=16"});
+    reference->load(renderer.shaders());
+    frame = std::make_unique<ScoredFrame>(renderer, scene.cameras[0], *reference);
+  }
+  Scene scene;
+  Renderer renderer;
+  std::unique_ptr<Technique> reference;
+  std::unique_ptr<ScoredFrame> frame;
+};
 
 struct PlanarScore {
   double psnr_traceable = 0, coverage = 0;
@@ -47,12 +60,9 @@ PlanarScore score_on_planar(Renderer& r, ScoredFrame& frame, const std::string& 
 TEST(Ppr, MatchesThesisHqOnGalleryMirror) {
   // One floor mirror, then five reflectors: floor tiles and wall mirrors overlapping on screen.
   for (const char* name : {"gallery", "gallery:reflectors=5"}) {
-    const Scene scene = make_builtin_scene(name);
-    Renderer r(scene, 320, 180);
-    auto reference = create_technique("reference");
-    apply_assignments(*reference, {"reference.samples=16"});
-    reference->load(r.shaders());
-    ScoredFrame frame(r, scene.cameras[0], *reference);
+    GalleryFrame g(name);
+    Renderer& r = g.renderer;
+    ScoredFrame& frame = *g.frame;
     const PlanarScore ppr = score_on_planar(r, frame, "ppr", {});
     const PlanarScore hq = score_on_planar(r, frame, "linear",
                                            {"linear.max_steps=1024", "linear.step_size=0.1", "linear.thickness=0.1",
@@ -72,12 +82,9 @@ TEST(Ppr, MatchesThesisHqOnGalleryMirror) {
 // Measured at 320x180 when written: ripples, coverage 91% (mirror-solution holes where the
 // bumps reflect what nothing projects onto).
 TEST(Ppr, NormalMapsAndRoughness) {
-  const Scene scene = make_builtin_scene("gallery:normal_map=ripples");
-  Renderer r(scene, 320, 180);
-  auto reference = create_technique("reference");
-  apply_assignments(*reference, {"reference.samples=16"});
-  reference->load(r.shaders());
-  ScoredFrame frame(r, scene.cameras[0], *reference);
+  GalleryFrame g("gallery:normal_map=ripples");
+  Renderer& r = g.renderer;
+  ScoredFrame& frame = *g.frame;
   const PlanarScore bumpy = score_on_planar(r, frame, "ppr", {});
   EXPECT_GE(bumpy.coverage, 0.85);
   EXPECT_EQ(bumpy.nonfinite, 0u);
