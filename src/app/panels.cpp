@@ -1,7 +1,9 @@
 #include "app/panels.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include <glm/glm.hpp>
 #include <imgui.h>
 
 namespace ssr {
@@ -65,6 +67,146 @@ bool draw_param_panel(ParamSet& params) {
     changed |= params.get(i) != before;
     ImGui::PopID();
   }
+  return changed;
+}
+
+namespace {
+
+// What a widget produced, made valid: a non-finite value (typed "nan") keeps the old one, the
+// rest is clamped to the range scene files accept, so edited scenes still load and validate.
+float valid(float v, float before, float lo, float hi) {
+  return std::isfinite(v) ? std::clamp(v, lo, hi) : before;
+}
+
+// A float dragged within [lo, hi]. The speed follows the magnitude (1% a pixel), so that both
+// 0.05 and 5000 are in reach; ImGui's logarithmic drags scale by the whole range, far too slow
+// for ranges up to 1e9.
+bool drag(const char* label, float& x, float lo, float hi) {
+  float v = x;
+  const float speed = std::max(std::abs(x), 1.0f) * 0.01f;
+  if (!ImGui::DragFloat(label, &v, speed, lo, hi, "%.4g", ImGuiSliderFlags_AlwaysClamp))
+    return false;
+  x = valid(v, x, lo, hi);
+  return true;
+}
+
+bool drag3(const char* label, glm::vec3& x, float lo, float hi) {
+  glm::vec3 v = x;
+  if (!ImGui::DragFloat3(label, &v.x, 0.05f, lo, hi, "%.3f", ImGuiSliderFlags_AlwaysClamp)) return false;
+  for (int i = 0; i < 3; ++i) x[i] = valid(v[i], x[i], lo, hi);
+  return true;
+}
+
+// A linear colour; HDR, as lights and skies go above 1.
+bool color_edit(const char* label, glm::vec3& c) {
+  glm::vec3 v = c;
+  if (!ImGui::ColorEdit3(label, &v.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) return false;
+  for (int i = 0; i < 3; ++i) c[i] = valid(v[i], c[i], 0.0f, 1e6f);
+  return true;
+}
+
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+}  // namespace
+
+bool draw_lights_panel(std::vector<Light>& lights) {
+  bool changed = false;
+  int remove = -1;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    Light& l = lights[i];
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::TreeNodeEx("light", ImGuiTreeNodeFlags_DefaultOpen, "light %zu: %s", i,
+                          l.type == Light::Type::Point ? "point" : "directional")) {
+      int type = l.type == Light::Type::Point ? 0 : 1;
+      ImGui::RadioButton("point", &type, 0);
+      ImGui::SameLine();
+      ImGui::RadioButton("directional", &type, 1);
+      changed |= type != (l.type == Light::Type::Point ? 0 : 1);
+      l.type = type == 0 ? Light::Type::Point : Light::Type::Directional;
+      ImGui::SameLine();
+      if (ImGui::SmallButton("remove")) remove = static_cast<int>(i);
+      if (l.type == Light::Type::Point) {
+        changed |= drag3("position", l.position, -1e7f, 1e7f);
+        changed |= drag("range", l.range, 1e-3f, 1e7f);
+        tooltip("distance where the smooth falloff reaches zero");
+      } else {
+        // Yaw and pitch of the direction the light travels: it stays a unit vector.
+        const glm::vec3 d = l.direction;
+        float yaw = glm::degrees(std::atan2(d.x, d.z));
+        float pitch = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+        const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+        bool turned = ImGui::SliderFloat("yaw", &yaw, -180.0f, 180.0f, "%.1f deg", clamp);
+        tooltip("direction the light travels, about +Y (0: towards +Z)");
+        turned |= ImGui::SliderFloat("pitch", &pitch, -90.0f, 90.0f, "%.1f deg", clamp);
+        tooltip("direction the light travels, above the horizontal (-90: straight down)");
+        if (turned && std::isfinite(yaw) && std::isfinite(pitch)) {
+          const float y = glm::radians(yaw), p = glm::radians(std::clamp(pitch, -90.0f, 90.0f));
+          l.direction = {std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y)};
+          changed = true;
+        }
+        ImGui::TextDisabled("direction %.3f %.3f %.3f", l.direction.x, l.direction.y, l.direction.z);
+      }
+      changed |= color_edit("color", l.color);
+      changed |= drag("intensity", l.intensity, 0.0f, 1e9f);
+      tooltip(l.type == Light::Type::Point ? "radiant intensity" : "irradiance");
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (remove >= 0) {
+    lights.erase(lights.begin() + remove);
+    changed = true;
+  }
+  const bool full = lights.size() >= static_cast<std::size_t>(Scene::kMaxLights);
+  ImGui::BeginDisabled(full);
+  if (ImGui::Button("add light")) {
+    Light l;
+    l.position = {0.0f, 2.0f, 0.0f};
+    lights.push_back(l);
+    changed = true;
+  }
+  ImGui::EndDisabled();
+  if (full && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("at most %d lights", Scene::kMaxLights);
+  return changed;
+}
+
+bool draw_environment_panel(Environment& env, float& ambient) {
+  bool changed = false;
+  int type = env.type == Environment::Type::Sky ? 0 : 1;
+  ImGui::RadioButton("sky", &type, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("constant", &type, 1);
+  changed |= type != (env.type == Environment::Type::Sky ? 0 : 1);
+  env.type = type == 0 ? Environment::Type::Sky : Environment::Type::Constant;
+  if (env.type == Environment::Type::Sky) {
+    changed |= color_edit("zenith", env.zenith);
+    changed |= color_edit("horizon", env.horizon);
+    changed |= color_edit("ground", env.ground);
+  } else {
+    changed |= color_edit("color", env.constant);
+  }
+  changed |= drag("intensity", env.intensity, 0.0f, 1e6f);
+  tooltip("scales the environment's colours");
+  changed |= drag("ambient", ambient, 0.0f, 1e6f);
+  tooltip("scales the environment's diffuse (ambient) light");
+  return changed;
+}
+
+bool draw_camera_panel(Camera& c) {
+  bool changed = false;
+  float fov = c.fov_y_deg;
+  if (ImGui::SliderFloat("fov y", &fov, 5.0f, 150.0f, "%.1f deg")) {
+    c.fov_y_deg = valid(fov, c.fov_y_deg, 1.001f, 178.999f);
+    changed = true;
+  }
+  // Each plane is kept on its side of the other: 0 < near < far.
+  changed |= drag("near", c.near_plane, 1e-6f, std::max(c.far_plane / 1.001f, 1e-6f));
+  changed |= drag("far", c.far_plane, std::min(c.near_plane * 1.001f, 1e7f), 1e7f);
+  ImGui::TextDisabled("position %.3f %.3f %.3f", c.position.x, c.position.y, c.position.z);
+  ImGui::TextDisabled("target   %.3f %.3f %.3f", c.target.x, c.target.y, c.target.z);
   return changed;
 }
 

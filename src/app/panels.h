@@ -1,6 +1,10 @@
-// ImGui panels drawn from the Params tables (the one description per parameter). No window
-// code here, so the panels also run against ImGui's null backend in tests.
+// ImGui panels: technique parameters drawn from the Params tables (the one description per
+// parameter), the scene's lights and environment, the camera. No window code here, so the panels
+// also run against ImGui's null backend in tests (tests/ui).
 #pragma once
+#include <vector>
+
+#include "scene/scene.h"
 #include "techniques/params.h"
 
 namespace ssr {
@@ -8,5 +12,19 @@ namespace ssr {
 // One widget per parameter (slider with the table's range, checkbox, or combo), the help text
 // as a tooltip, a reset button per parameter and a 'reset all' button. Returns true when a value changed.
 bool draw_param_panel(ParamSet& params);
+
+// The scene's lights: per light its type, position (point) or direction (directional, as yaw and
+// pitch, so it stays a unit vector), colour, intensity and range (point); add and remove within
+// Scene::kMaxLights. Values stay in the ranges that validate() and scene files accept, so the
+// result can go to Renderer::set_lighting and into a preset. Returns true when something changed.
+bool draw_lights_panel(std::vector<Light>& lights);
+
+// The environment (sky or constant colour, intensity) and the scene's ambient factor, kept in
+// the ranges scene files accept. Returns true when something changed.
+bool draw_environment_panel(Environment& environment, float& ambient);
+
+// Field of view, near and far of `camera` (kept valid: 1 < fov < 179, 0 < near < far), and its
+// position and target as read-outs. Returns true when something changed.
+bool draw_camera_panel(Camera& camera);
 
 }  // namespace ssr

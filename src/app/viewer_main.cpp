@@ -2,20 +2,20 @@
 //
 //   mouse: left drag orbits around the target, right drag pans, wheel zooms
 //   WASD/QE: fly (Shift x4, Ctrl x0.25)   F12: screenshot   F5: reload shaders   F2: hide UI
-//   --frames N --screenshot F.png: render N frames, save the frame, exit (for tests).
 //   Compare mode: technique A (left) and B (right) on the same frame inputs, with a draggable
-//   divider (--technique-b NAME --split X), or a difference heat map of A vs B (--diff).
+//   divider, or a difference heat map of A vs B with the PSNR. The reference and the traceable
+//   mask (CPU ray tracing) run on demand, with a progress bar.
+//   --frames N --screenshot F.png, or --script FILE (viewer_script.h): scripted runs for tests.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <deque>
 #include <filesystem>
 #include <map>
 
 #include <CLI/CLI.hpp>
-#include <glm/gtc/constants.hpp>
 
 #include "gl/gl.h"
 #include <GLFW/glfw3.h>
@@ -24,11 +24,16 @@
 #include <imgui_impl_opengl3.h>
 
 #include "app/panels.h"
+#include "app/viewer_preset.h"
+#include "app/viewer_script.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "eval/grid.h"
 #include "gl/context.h"
+#include "reference/reference.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
+#include "scene/builtin_scenes.h"
 #include "scene/scene_io.h"
 #include "techniques/technique.h"
 
@@ -50,9 +55,14 @@ struct Options {
   std::string technique_b = "none";
   double split = -1;  // < 0: no split at start
   bool diff = false;
+  std::string preset;  // a preset to start from
+  std::string script;  // scripted input
+  std::string ini;     // ImGui layout file; default: the user's config directory
 };
 
 enum CompareMode : int { CompareOff = 0, CompareSplit = 1, CompareDiff = 2 };
+constexpr int kViewTraceable = VIEW_COUNT;  // the viewer's own view: the reference's classes
+const char* const kCompareNames[] = {"off", "split", "diff"};
 
 // Techniques too slow to run every frame (CPU ray tracing): they run when asked.
 bool on_demand(const Technique& t) { return t.name() == "reference"; }
@@ -75,13 +85,6 @@ std::string technique_key(Technique& t) {
   ParamSet p = t.params();
   for (std::size_t i = 0; i < p.size(); ++i) k += "," + p.to_string(i);
   return k;
-}
-
-std::string frame_key(const Camera& c, int view, float exposure, int w, int h) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, "%g %g %g|%g %g %g|%g|%d|%g|%dx%d", c.position.x, c.position.y,
-                c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view, exposure, w, h);
-  return buf;
 }
 
 bool is_frame_pass(const std::string& name) {
@@ -116,20 +119,6 @@ double psnr8(const RgbaImage8& a, const RgbaImage8& b) {
   return 10.0 * std::log10(1.0 / (sum / static_cast<double>(n)));
 }
 
-// Splits --set assignments between the two techniques by their "<technique>." prefix; keys of
-// neither go to A, whose apply reports them.
-void apply_sets(Technique& a, Technique& b, const std::vector<std::string>& sets) {
-  std::vector<std::string> to_a, to_b;
-  for (const std::string& s : sets) {
-    const std::string prefix = s.substr(0, s.find('.'));
-    const bool for_a = prefix == a.name(), for_b = prefix == b.name();
-    if (for_b) to_b.push_back(s);
-    if (for_a || !for_b) to_a.push_back(s);
-  }
-  apply_assignments(a, to_a);
-  apply_assignments(b, to_b);
-}
-
 // Orbit camera state kept as spherical coordinates around the target.
 struct OrbitCamera {
   Camera cam;
@@ -156,26 +145,779 @@ std::string timestamped_name() {
   return buf;
 }
 
-int run(const Options& o) {
-  const auto [w, h] = parse_size(o.size);
-  const ViewMode initial_view = parse_view_mode(o.view);
-  Scene scene = load_scene(o.scene);
-  std::unique_ptr<Technique> requested = create_technique(o.technique);  // validated before GL
-  std::unique_ptr<Technique> requested_b = create_technique(o.technique_b);
-  apply_sets(*requested, *requested_b, o.sets);
-  OrbitCamera orbit;
-  orbit.from_camera(o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera));
-  if (!o.screenshot.empty()) image_format_for(o.screenshot);
+// Where ImGui keeps its window layout between runs: $XDG_CONFIG_HOME/ssrlab or ~/.config/ssrlab.
+std::string default_ini_path() {
+  fs::path dir;
+  if (const char* x = std::getenv("XDG_CONFIG_HOME"); x && *x) dir = fs::path(x) / "ssrlab";
+  else if (const char* h = std::getenv("HOME"); h && *h) dir = fs::path(h) / ".config" / "ssrlab";
+  else return "imgui.ini";
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  return ec ? std::string("imgui.ini") : (dir / "imgui.ini").string();
+}
+
+// Scenes the picker offers: the built-ins, then the JSON scenes shipped in assets/scenes.
+std::vector<std::string> scene_choices() {
+  std::vector<std::string> names;
+  for (const BuiltinSceneInfo& s : builtin_scenes()) names.push_back(s.name);
+  std::error_code ec;
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(fs::path(SSRLAB_ASSET_DIR) / "scenes", ec))
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  names.insert(names.end(), files.begin(), files.end());
+  return names;
+}
+
+bool combo(const char* label, int* current, const std::vector<std::string>& items) {
+  return ImGui::Combo(label, current, [](void* data, int i, const char** out) {
+    *out = static_cast<const std::vector<std::string>*>(data)->at(static_cast<std::size_t>(i)).c_str();
+    return true;
+  }, const_cast<std::vector<std::string>*>(&items), static_cast<int>(items.size()));
+}
+
+class Viewer {
+ public:
+  explicit Viewer(const Options& o) : o_(o) {}
+  int run();
+
+ private:
+  // --- set-up and state changes (all validate first and throw InputError) ---
+  void open_window(int w, int h);
+  void load_scene_spec(const std::string& spec, const std::string& camera_name);
+  void set_technique(Side& side, const std::string& name);
+  void apply_sets(const std::vector<std::string>& sets);
+  void set_lighting(const std::vector<Light>& lights, const Environment& env, float ambient);
+  ViewerPreset capture_preset() const;
+  void apply_preset(const ViewerPreset& p);
+  void run_command(const ScriptCommand& c);
+  // --- one iteration of the main loop ---
+  void frame(double dt);
+  void handle_input(float dt);
+  void draw_ui(double dt);
+  void technique_panel(Side& side, const char* label);
+  void timing_panel(double dt);
+  void render();
+  void update_traceable_mask();
+  void draw_progress(const std::string& what, double fraction);
+  void save(const std::string& path);
+  void reload();
+  std::string frame_key() const;
+
+  Options o_;
+  bool scripted_ = false;  // --frames or --script: on-demand work runs without being asked
+  GLFWwindow* window_ = nullptr;
+  gl::ContextInfo info_;
+  gl::ShaderSource shaders_;
+  gl::PassTimer::Clock clock_ = gl::PassTimer::Clock::Cpu;
+
+  std::string scene_spec_;
+  std::vector<Camera> cameras_;  // the scene's named cameras, then the user's bookmarks
+  std::vector<Light> lights_;    // edited copies of the scene's lighting
+  Environment environment_;
+  float ambient_ = 0.3f;
+  int lighting_revision_ = 0;
+  std::unique_ptr<Renderer> renderer_;
+  Side sides_[2];
+  OrbitCamera orbit_;
+  gl::Program diff_prog_;
+  gl::Texture2D composed_;  // what the window and screenshots show (no UI)
+  gl::Framebuffer blit_fbo_;  // created once the context exists
+
+  // Traceable mask: a reference of its own, run on demand, shown as its class map.
+  std::unique_ptr<Technique> mask_ref_;
+  gl::Texture2D mask_tex_;
+  std::string mask_key_;
+  bool mask_request_ = false;
+
+  int fb_w_ = 0, fb_h_ = 0;
+  int view_ = VIEW_FINAL;
+  int compare_ = CompareOff;
+  float split_ = 0.5f, diff_scale_ = 0.25f;
+  bool dragging_divider_ = false, show_ui_ = true;
+  std::string status_;
+  bool status_error_ = false;
+  std::string psnr_key_;
+  double psnr_ = 0;
+  bool psnr_valid_ = false;
+  glm::dvec2 last_mouse_{0};
+  std::map<int, bool> key_was_down_;
+  std::deque<float> frame_ms_;
+  std::vector<std::string> view_names_, scene_names_;
+  char preset_path_[512] = "ssrlab-preset.json";
+  char scene_path_[512] = "";
+  int bookmarks_ = 0;
+};
+
+void Viewer::open_window(int w, int h) {
+  if (!glfwInit()) throw RuntimeError("GLFW could not initialise (no display?).");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  window_ = glfwCreateWindow(w, h, "ssrlab", nullptr, nullptr);
+  if (!window_) throw RuntimeError("no OpenGL 4.5 core window could be created.");
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(scripted_ ? 0 : 1);
+  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
+    throw RuntimeError("OpenGL functions could not be loaded.");
+  info_ = gl::query_current_context("glfw");
+  std::fprintf(stderr, "ssrlab-view: GL via glfw: %s | %s\n", info_.renderer.c_str(), info_.version.c_str());
+  clock_ = info_.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu;
+}
+
+void Viewer::load_scene_spec(const std::string& spec, const std::string& camera_name) {
+  Scene scene = load_scene(spec);
+  const Camera cam = camera_name.empty() ? scene.cameras.front() : scene.camera(camera_name);
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  renderer_ = std::make_unique<Renderer>(scene, std::max(w, 1), std::max(h, 1), shaders_);
+  scene_spec_ = spec;
+  cameras_ = scene.cameras;
+  bookmarks_ = 0;
+  lights_ = scene.lights;
+  environment_ = scene.environment;
+  ambient_ = scene.ambient;
+  orbit_.from_camera(cam);
+  for (Side& s : sides_) {
+    s.valid = false;
+    s.shown_key.clear();
+  }
+  mask_key_.clear();
+  psnr_valid_ = false;
+}
+
+void Viewer::set_technique(Side& side, const std::string& name) {
+  std::unique_ptr<Technique> next = create_technique(name);
+  next->load(renderer_->shaders());
+  side.technique = std::move(next);
+  set_reference_progress(*side.technique, [this](double f) { draw_progress("reference", f); });
+  side.valid = false;
+  side.shown_key.clear();
+  side.request = 0;
+  side.history.clear();
+}
+
+// Splits assignments between the two techniques by their "<technique>." prefix; keys of
+// neither go to A, whose apply reports them.
+void Viewer::apply_sets(const std::vector<std::string>& sets) {
+  Technique& a = *sides_[0].technique;
+  Technique& b = *sides_[1].technique;
+  std::vector<std::string> to_a, to_b;
+  for (const std::string& s : sets) {
+    const std::string prefix = s.substr(0, s.find('.'));
+    const bool for_a = prefix == a.name(), for_b = prefix == b.name();
+    if (for_b) to_b.push_back(s);
+    if (for_a || !for_b) to_a.push_back(s);
+  }
+  apply_assignments(a, to_a);
+  apply_assignments(b, to_b);
+}
+
+void Viewer::set_lighting(const std::vector<Light>& lights, const Environment& env, float ambient) {
+  renderer_->set_lighting(lights, env, ambient);  // throws, changing nothing, when invalid
+  lights_ = lights;
+  environment_ = env;
+  ambient_ = ambient;
+  ++lighting_revision_;
+}
+
+ViewerPreset Viewer::capture_preset() const {
+  ViewerPreset p;
+  p.scene = scene_spec_;
+  p.camera = orbit_.cam;
+  p.camera_name = orbit_.cam.name;
+  p.technique_a = sides_[0].technique->name();
+  p.technique_b = sides_[1].technique->name();
+  p.params_a = capture_params(*sides_[0].technique);
+  p.params_b = capture_params(*sides_[1].technique);
+  p.compare = kCompareNames[compare_];
+  p.split = std::clamp(split_, 0.0f, 1.0f);  // Ctrl+click on a slider can type beyond its range
+  p.diff_scale = std::clamp(diff_scale_, 0.01f, 1.0f);
+  p.view = viewer_view_names()[static_cast<std::size_t>(view_)];
+  p.exposure = std::clamp(renderer_->settings.exposure, -20.0f, 20.0f);
+  p.lights = lights_;
+  p.environment = environment_;
+  p.ambient = ambient_;
+  return p;
+}
+
+// Techniques, parameters and the view are checked before anything changes; a scene or camera
+// that does not load stops it part-way (the error names it).
+void Viewer::apply_preset(const ViewerPreset& p) {
+  std::unique_ptr<Technique> a = create_technique(p.technique_a), b = create_technique(p.technique_b);
+  apply_params(*a, p.params_a);
+  apply_params(*b, p.params_b);
+  const int view = p.view == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(p.view));
+  if (!p.scene.empty() && p.scene != scene_spec_) load_scene_spec(p.scene, "");
+  if (p.camera) orbit_.from_camera(*p.camera);
+  else if (!p.camera_name.empty()) run_command({0, "camera", {p.camera_name}});
+  if (p.lights || p.environment || p.ambient)
+    set_lighting(p.lights.value_or(lights_), p.environment.value_or(environment_), p.ambient.value_or(ambient_));
+  set_technique(sides_[0], p.technique_a);
+  set_technique(sides_[1], p.technique_b);
+  apply_params(*sides_[0].technique, p.params_a);
+  apply_params(*sides_[1].technique, p.params_b);
+  compare_ = p.compare == "split" ? CompareSplit : p.compare == "diff" ? CompareDiff : CompareOff;
+  split_ = p.split;
+  diff_scale_ = p.diff_scale;
+  view_ = view;
+  renderer_->settings.exposure = p.exposure;
+}
+
+std::string Viewer::frame_key() const {
+  const Camera& c = orbit_.cam;
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d",
+                static_cast<unsigned long long>(renderer_->scene_id()), lighting_revision_, c.position.x,
+                c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view_,
+                renderer_->settings.exposure, fb_w_, fb_h_);
+  return buf;
+}
+
+void Viewer::save(const std::string& path) {
+  write_png(path, composed_ ? read_rgba8(composed_) : renderer_->read_display());
+  status_ = "saved " + path;
+  status_error_ = false;
+  std::printf("ssrlab-view: %s\n", status_.c_str());
+}
+
+void Viewer::reload() {
+  try {
+    renderer_->reload_shaders();
+    for (Side& s : sides_) s.technique->load(renderer_->shaders());
+    if (mask_ref_) mask_ref_->load(renderer_->shaders());
+    diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
+    for (Side& s : sides_) s.shown_key.clear();
+    status_ = "shaders reloaded";
+    status_error_ = false;
+  } catch (const std::exception& e) {
+    status_ = e.what();  // the last good programs keep running
+    status_error_ = true;
+    std::fprintf(stderr, "ssrlab-view: reload failed: %s\n", e.what());
+  }
+}
+
+// A frame with only a progress bar over the last image: long CPU work (the reference) calls it.
+void Viewer::draw_progress(const std::string& what, double fraction) {
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(420.0f, io.DisplaySize.x), 0));
+  ImGui::Begin("computing", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Text("%s: CPU ray tracing (Embree)", what.c_str());
+  ImGui::ProgressBar(static_cast<float>(std::clamp(fraction, 0.0, 1.0)));
+  ImGui::End();
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w_, fb_h_);
+  if (composed_ && composed_.width() == fb_w_ && composed_.height() == fb_h_) {
+    glNamedFramebufferTexture(blit_fbo_.id(), GL_COLOR_ATTACHMENT0, composed_.id(), 0);
+    glBlitNamedFramebuffer(blit_fbo_.id(), 0, 0, 0, fb_w_, fb_h_, 0, 0, fb_w_, fb_h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+}
+
+void Viewer::run_command(const ScriptCommand& c) {
+  const std::string& a = c.args.empty() ? std::string() : c.args[0];
+  if (c.verb == "scene") load_scene_spec(a, "");
+  else if (c.verb == "camera") {
+    auto it = std::find_if(cameras_.begin(), cameras_.end(), [&](const Camera& k) { return k.name == a; });
+    if (it == cameras_.end()) throw InputError("the scene has no camera '" + a + "'.");
+    orbit_.from_camera(*it);
+  } else if (c.verb == "technique") set_technique(sides_[0], a);
+  else if (c.verb == "technique-b") set_technique(sides_[1], a);
+  else if (c.verb == "set") apply_sets({a});
+  else if (c.verb == "compare") compare_ = a == "split" ? CompareSplit : a == "diff" ? CompareDiff : CompareOff;
+  else if (c.verb == "split") {
+    split_ = std::stof(a);
+    compare_ = CompareSplit;
+  } else if (c.verb == "view") view_ = a == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(a));
+  else if (c.verb == "exposure") renderer_->settings.exposure = std::stof(a);
+  else if (c.verb == "ambient") set_lighting(lights_, environment_, std::stof(a));
+  else if (c.verb == "screenshot") save(a);
+  else if (c.verb == "preset-save") {
+    save_preset(a, capture_preset());
+    std::printf("ssrlab-view: preset saved to %s\n", a.c_str());
+  } else if (c.verb == "preset-load") apply_preset(load_preset(a));
+  else if (c.verb == "resize") {
+    const auto [w, h] = parse_size(a);
+    glfwSetWindowSize(window_, w, h);
+  } else if (c.verb == "minimise") glfwIconifyWindow(window_);
+  else if (c.verb == "restore") glfwRestoreWindow(window_);
+  else if (c.verb == "reload") reload();
+}
+
+void Viewer::handle_input(float dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // ImGui 1.86 has no named keys: GLFW key state, edges detected here.
+  auto down = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS; };
+  auto pressed = [&](int key) {
+    const bool d = down(key), was = key_was_down_[key];
+    key_was_down_[key] = d;
+    return d && !was;
+  };
+  if (!io.WantCaptureKeyboard) {
+    if (pressed(GLFW_KEY_F2)) show_ui_ = !show_ui_;
+    if (pressed(GLFW_KEY_F12)) save(timestamped_name());
+    if (pressed(GLFW_KEY_F5)) reload();
+    const float speed = 3.0f * dt * (io.KeyShift ? 4.0f : 1.0f) * (io.KeyCtrl ? 0.25f : 1.0f);
+    const glm::vec3 fwd = glm::normalize(orbit_.cam.target - orbit_.cam.position);
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
+    glm::vec3 move{0};
+    if (down(GLFW_KEY_W)) move += fwd;
+    if (down(GLFW_KEY_S)) move -= fwd;
+    if (down(GLFW_KEY_D)) move += right;
+    if (down(GLFW_KEY_A)) move -= right;
+    if (down(GLFW_KEY_E)) move.y += 1;
+    if (down(GLFW_KEY_Q)) move.y -= 1;
+    orbit_.cam.position += move * speed;
+    orbit_.cam.target += move * speed;
+  }
+  glm::dvec2 mouse;
+  glfwGetCursorPos(window_, &mouse.x, &mouse.y);
+  const glm::vec2 delta = glm::vec2(mouse - last_mouse_);
+  last_mouse_ = mouse;
+  // The split divider: drag it with the left button (window coordinates, as ImGui's).
+  const float divider_x = split_ * io.DisplaySize.x;
+  const bool near_divider = compare_ == CompareSplit && std::abs(static_cast<float>(mouse.x) - divider_x) < 6.0f;
+  if (!io.WantCaptureMouse && near_divider && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) dragging_divider_ = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging_divider_ = false;
+  if (dragging_divider_ && io.DisplaySize.x > 0)
+    split_ = std::clamp(static_cast<float>(mouse.x) / io.DisplaySize.x, 0.0f, 1.0f);
+  if ((near_divider && !io.WantCaptureMouse) || dragging_divider_) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  if (io.WantCaptureMouse || dragging_divider_) return;
+  if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    orbit_.from_camera(orbit_.cam);
+    orbit_.yaw -= delta.x * 0.005f;
+    orbit_.pitch += delta.y * 0.005f;
+    orbit_.update_position();
+  }
+  if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+    const glm::vec3 fwd = glm::normalize(orbit_.cam.target - orbit_.cam.position);
+    const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, fwd);
+    const float k = glm::length(orbit_.cam.target - orbit_.cam.position) * 0.002f;
+    const glm::vec3 pan = (-right * delta.x + up * delta.y) * k;
+    orbit_.cam.position += pan;
+    orbit_.cam.target += pan;
+  }
+  if (io.MouseWheel != 0) {
+    orbit_.from_camera(orbit_.cam);
+    orbit_.distance = std::clamp(orbit_.distance * std::pow(0.9f, io.MouseWheel), 0.05f, 1000.0f);
+    orbit_.update_position();
+  }
+}
+
+// Technique picker + parameter panel of one side.
+void Viewer::technique_panel(Side& side, const char* label) {
+  ImGui::PushID(label);
+  if (ImGui::BeginCombo(label, side.technique->name().c_str())) {
+    for (const TechniqueInfo& t : technique_registry()) {
+      if (ImGui::Selectable(t.name.c_str(), t.name == side.technique->name())) {
+        try {
+          set_technique(side, t.name);
+        } catch (const std::exception& e) {
+          status_ = e.what();
+          status_error_ = true;
+        }
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (on_demand(*side.technique)) {
+    ImGui::BeginDisabled(side.request > 0);
+    if (ImGui::Button("compute")) side.request = 2;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (side.request > 0) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "computing...");
+    else if (!side.valid) ImGui::TextDisabled("not computed yet (CPU ray tracing: on demand)");
+    else if (side.shown_key != frame_key() + "|" + technique_key(*side.technique))
+      ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "stale: the view changed");
+    else ImGui::TextDisabled("up to date");
+  }
+  if (ImGui::TreeNodeEx("parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ParamSet params = side.technique->params();
+    draw_param_panel(params);
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+}
+
+// Per-pass times of the last frame of each side (one column each), the technique's rolling
+// plot and the frame time. Marked `cpu` where the GL cannot time on the GPU (llvmpipe).
+void Viewer::timing_panel(double dt) {
+  const char* clock_name = sides_[0].timer->clock_name();
+  const int n = compare_ != CompareOff ? 2 : 1;
+  std::vector<std::string> passes;
+  for (int i = 0; i < n; ++i)
+    for (const auto& p : sides_[i].last_times)
+      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
+  if (ImGui::BeginTable("passes", n + 1, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn(clock_name[0] == 'g' ? "pass (gpu ms)" : "pass (cpu ms)");
+    for (int i = 0; i < n; ++i) ImGui::TableSetupColumn(i == 0 ? "A" : "B");
+    ImGui::TableHeadersRow();
+    std::vector<double> total(static_cast<std::size_t>(n), 0.0);
+    for (const std::string& pass : passes) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(pass.c_str());
+      for (int i = 0; i < n; ++i) {
+        ImGui::TableNextColumn();
+        for (const auto& p : sides_[i].last_times)
+          if (p.name == pass) {
+            ImGui::Text("%7.3f", p.ms);
+            total[static_cast<std::size_t>(i)] += p.ms;
+          }
+      }
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("total");
+    for (int i = 0; i < n; ++i) {
+      ImGui::TableNextColumn();
+      ImGui::Text("%7.3f", total[static_cast<std::size_t>(i)]);
+    }
+    ImGui::EndTable();
+  }
+  for (int i = 0; i < n; ++i) {
+    const Side& s = sides_[i];
+    if (s.history.empty()) continue;
+    const std::vector<float> h(s.history.begin(), s.history.end());
+    const float hi = *std::max_element(h.begin(), h.end());
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms (%s)", i == 0 ? "A" : "B",
+                  s.technique->name().c_str(), h.back(), clock_name);
+    ImGui::PushID(i);
+    ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f,
+                     std::max(hi * 1.2f, 1e-3f), ImVec2(-1, 45));
+    ImGui::PopID();
+  }
+  if (!frame_ms_.empty()) {
+    const std::vector<float> f(frame_ms_.begin(), frame_ms_.end());
+    const float hi = *std::max_element(f.begin(), f.end());
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame %.1f ms (wall clock)", dt * 1000.0);
+    ImGui::PlotLines("##frame", f.data(), static_cast<int>(f.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1.0f),
+                     ImVec2(-1, 45));
+  }
+  if (clock_ == gl::PassTimer::Clock::Cpu)
+    ImGui::TextDisabled("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
+}
+
+void Viewer::draw_ui(double dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (compare_ == CompareSplit) {  // the divider and labels are UI: never in screenshots
+    ImDrawList* bg = ImGui::GetBackgroundDrawList();
+    const float x = split_ * io.DisplaySize.x;
+    bg->AddLine(ImVec2(x, 0), ImVec2(x, io.DisplaySize.y),
+                dragging_divider_ ? IM_COL32(255, 220, 80, 255) : IM_COL32(255, 255, 255, 200), 2.0f);
+    if (show_ui_) {
+      const std::string left = "A: " + sides_[0].technique->name(), right = "B: " + sides_[1].technique->name();
+      bg->AddText(ImVec2(x - 8 - ImGui::CalcTextSize(left.c_str()).x, io.DisplaySize.y - 22),
+                  IM_COL32(255, 255, 255, 230), left.c_str());
+      bg->AddText(ImVec2(x + 8, io.DisplaySize.y - 22), IM_COL32(255, 255, 255, 230), right.c_str());
+    }
+  }
+  if (!show_ui_) return;
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(400, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("ssrlab");
+  ImGui::TextDisabled("%s", info_.renderer.c_str());
+
+  if (ImGui::CollapsingHeader("scene and camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+    int current = static_cast<int>(std::find(scene_names_.begin(), scene_names_.end(), scene_spec_) - scene_names_.begin());
+    if (current >= static_cast<int>(scene_names_.size())) current = -1;
+    if (combo("scene", &current, scene_names_) && current >= 0) {
+      try {
+        load_scene_spec(scene_names_[static_cast<std::size_t>(current)], "");
+      } catch (const std::exception& e) {
+        status_ = e.what();
+        status_error_ = true;
+      }
+    }
+    ImGui::InputTextWithHint("##scenepath", ".json or .obj path", scene_path_, sizeof scene_path_);
+    ImGui::SameLine();
+    if (ImGui::Button("open") && scene_path_[0]) {
+      try {
+        load_scene_spec(scene_path_, "");
+      } catch (const std::exception& e) {
+        status_ = e.what();
+        status_error_ = true;
+      }
+    }
+    if (ImGui::BeginCombo("camera", orbit_.cam.name.c_str())) {
+      for (const Camera& c : cameras_)
+        if (ImGui::Selectable(c.name.c_str(), c.name == orbit_.cam.name)) orbit_.from_camera(c);
+      ImGui::EndCombo();
+    }
+    if (ImGui::Button("bookmark this view")) {
+      Camera c = orbit_.cam;
+      c.name = "bookmark " + std::to_string(++bookmarks_);
+      cameras_.push_back(c);
+      orbit_.cam.name = c.name;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("adds the current view to the camera list (saved with presets)");
+    draw_camera_panel(orbit_.cam);
+  }
+  if (ImGui::CollapsingHeader("lights and environment")) {
+    std::vector<Light> lights = lights_;
+    Environment env = environment_;
+    float ambient = ambient_;
+    const bool changed = draw_lights_panel(lights) | draw_environment_panel(env, ambient);
+    if (changed) {
+      try {
+        set_lighting(lights, env, ambient);
+      } catch (const std::exception& e) {
+        status_ = e.what();
+        status_error_ = true;
+      }
+    }
+  }
+  if (ImGui::CollapsingHeader("view and compare", ImGuiTreeNodeFlags_DefaultOpen)) {
+    combo("view", &view_, view_names_);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("G-buffer channels, lit colour, reflection, confidence, tracer heat maps, PPR buffers,\n"
+                        "and 'traceable': the reference's classes (green traceable, red missing, blue sky)");
+    if (view_ == kViewTraceable) {
+      if (mask_request_) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "computing...");
+      else if (mask_key_ != frame_key()) {
+        if (ImGui::Button("compute traceable mask")) mask_request_ = true;
+        ImGui::SameLine();
+        ImGui::TextDisabled(mask_key_.empty() ? "not computed" : "stale");
+      } else ImGui::TextDisabled("traceable mask up to date");
+    }
+    ImGui::SliderFloat("exposure", &renderer_->settings.exposure, -8.0f, 8.0f, "%.2f stops");
+    ImGui::TextUnformatted("compare:");
+    ImGui::SameLine();
+    ImGui::RadioButton("A only", &compare_, CompareOff);
+    ImGui::SameLine();
+    ImGui::RadioButton("split", &compare_, CompareSplit);
+    ImGui::SameLine();
+    ImGui::RadioButton("difference", &compare_, CompareDiff);
+    if (compare_ == CompareSplit) ImGui::SliderFloat("divider", &split_, 0.0f, 1.0f, "%.3f");
+    if (compare_ == CompareDiff) {
+      ImGui::SliderFloat("full scale", &diff_scale_, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean |A - B| over RGB (display values) shown as the hottest colour");
+    }
+    if (compare_ != CompareOff) {
+      if (sides_[0].request > 0 || sides_[1].request > 0) ImGui::Text("PSNR A vs B: computing...");
+      else if (!psnr_valid_) ImGui::TextDisabled("PSNR A vs B: -");
+      else if (std::isinf(psnr_)) ImGui::Text("PSNR A vs B: identical");
+      else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
+    }
+  }
+  if (ImGui::CollapsingHeader("technique A", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(sides_[0], "A");
+  if (compare_ != CompareOff && ImGui::CollapsingHeader("technique B", ImGuiTreeNodeFlags_DefaultOpen))
+    technique_panel(sides_[1], "B");
+  if (ImGui::CollapsingHeader("presets")) {
+    ImGui::InputText("file", preset_path_, sizeof preset_path_);
+    if (ImGui::Button("save")) {
+      try {
+        save_preset(preset_path_, capture_preset());
+        status_ = std::string("preset saved to ") + preset_path_;
+        status_error_ = false;
+      } catch (const std::exception& e) {
+        status_ = e.what();
+        status_error_ = true;
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("load")) {
+      try {
+        apply_preset(load_preset(preset_path_));
+        status_ = std::string("preset loaded from ") + preset_path_;
+        status_error_ = false;
+      } catch (const std::exception& e) {
+        status_ = e.what();
+        status_error_ = true;
+      }
+    }
+    ImGui::TextDisabled("techniques, parameters, view, camera, lights (JSON, written atomically)");
+  }
+  if (ImGui::CollapsingHeader("timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_panel(dt);
+  if (!status_.empty()) {
+    if (status_error_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+    ImGui::TextWrapped("%s", status_.c_str());
+    if (status_error_) ImGui::PopStyleColor();
+  }
+  ImGui::End();
+}
+
+// Runs the reference of the mask on demand (or in scripted runs) and turns its classes into an image.
+void Viewer::update_traceable_mask() {
+  const std::string key = frame_key();
+  if (mask_key_ == key || !(mask_request_ || scripted_)) return;
+  mask_request_ = false;
+  if (!mask_ref_) {
+    mask_ref_ = create_technique("reference");
+    mask_ref_->load(renderer_->shaders());
+    set_reference_progress(*mask_ref_, [this](double f) { draw_progress("traceable mask", f); });
+  }
+  renderer_->render_inputs(orbit_.cam, nullptr);
+  renderer_->run_technique(*mask_ref_, nullptr);
+  const ReferenceOutputs out = reference_outputs(*mask_ref_);
+  RgbaImage8 im = class_map(*out.classes, fb_w_, fb_h_);
+  // Texture rows go bottom-up.
+  const std::size_t row = static_cast<std::size_t>(fb_w_) * 4;
+  std::vector<std::uint8_t> flipped(im.pixels.size());
+  for (int y = 0; y < fb_h_; ++y)
+    std::copy_n(im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(fb_h_ - 1 - y)), row,
+                flipped.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+  mask_tex_ = gl::Texture2D("viewer traceable mask", GL_RGBA8, fb_w_, fb_h_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, fb_w_, fb_h_, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  mask_key_ = key;
+}
+
+void Viewer::render() {
+  renderer_->resize(fb_w_, fb_h_);
+  if (!composed_ || composed_.width() != fb_w_ || composed_.height() != fb_h_) {
+    composed_ = gl::Texture2D("viewer composed", GL_RGBA8, fb_w_, fb_h_);
+    for (Side& s : sides_) {
+      s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, fb_w_, fb_h_);
+      const std::uint8_t black[4] = {0, 0, 0, 255};
+      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
+      s.valid = false;
+      s.shown_key.clear();
+    }
+    psnr_valid_ = false;
+    psnr_key_.clear();
+  }
+  if (view_ == kViewTraceable) {
+    update_traceable_mask();
+    if (mask_tex_.width() == fb_w_ && mask_tex_.height() == fb_h_)
+      glCopyImageSubData(mask_tex_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                         fb_w_, fb_h_, 1);
+    return;
+  }
+  const std::string fkey = frame_key();
+  const int n_sides = compare_ == CompareOff ? 1 : 2;
+  bool inputs_done = false;
+  for (int i = 0; i < n_sides; ++i) {
+    Side& s = sides_[i];
+    if (s.request == 2) {  // one frame showing "computing..." first
+      s.request = 1;
+      continue;
+    }
+    const std::string key = fkey + "|" + technique_key(*s.technique);
+    // On-demand techniques run when asked (and in scripted runs, whenever their image is stale).
+    const bool run_it = !on_demand(*s.technique) || s.request == 1 || (scripted_ && s.shown_key != key);
+    if (!run_it) continue;
+    s.request = 0;
+    s.timer->begin_frame();
+    if (!inputs_done) renderer_->render_inputs(orbit_.cam, s.timer.get());
+    inputs_done = true;
+    renderer_->run_technique(*s.technique, s.timer.get());
+    renderer_->composite_and_display(static_cast<ViewMode>(view_), s.timer.get());
+    s.timer->end_frame();
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
+    glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0,
+                       0, 0, fb_w_, fb_h_, 1);
+    s.valid = true;
+    s.shown_key = key;
+    if (!s.timer->completed().empty()) {
+      s.last_times = s.timer->completed().back();
+      s.timer->completed().clear();
+      double tech = 0;
+      for (const auto& p : s.last_times)
+        if (!is_frame_pass(p.name)) tech += p.ms;
+      s.history.push_back(static_cast<float>(tech));
+      while (s.history.size() > 120) s.history.pop_front();
+    }
+  }
+  // Compose A | B (split), the heat map (difference), or A alone.
+  if (compare_ == CompareDiff) {
+    glUseProgram(diff_prog_.id());
+    glBindTextureUnit(20, sides_[0].copy.id());
+    glBindTextureUnit(21, sides_[1].copy.id());
+    glBindImageTexture(3, composed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glUniform1f(0, diff_scale_);
+    diff_prog_.dispatch_2d(fb_w_, fb_h_);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glBindTextureUnit(20, 0);
+    glBindTextureUnit(21, 0);
+  } else {
+    glCopyImageSubData(sides_[0].copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       fb_w_, fb_h_, 1);
+    const int x0 = std::clamp(static_cast<int>(std::lround(split_ * static_cast<float>(fb_w_))), 0, fb_w_);
+    if (compare_ == CompareSplit && x0 < fb_w_)
+      glCopyImageSubData(sides_[1].copy.id(), GL_TEXTURE_2D, 0, x0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, x0, 0,
+                         0, fb_w_ - x0, fb_h_, 1);
+  }
+  // PSNR of A vs B, on the CPU, whenever either image changed.
+  if (compare_ != CompareOff && sides_[0].valid && sides_[1].valid) {
+    const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key;
+    if (key != psnr_key_) {
+      psnr_ = psnr8(read_rgba8(sides_[0].copy), read_rgba8(sides_[1].copy));
+      psnr_valid_ = true;
+      psnr_key_ = key;
+    }
+  } else if (compare_ != CompareOff) {
+    psnr_valid_ = false;
+    psnr_key_.clear();
+  }
+}
+
+void Viewer::frame(double dt) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  handle_input(static_cast<float>(dt));
+  draw_ui(dt);
+  ImGui::Render();
+  glfwGetFramebufferSize(window_, &fb_w_, &fb_h_);
+  if (fb_w_ <= 0 || fb_h_ <= 0) return;  // minimised: a 0x0 framebuffer, nothing to draw
+  render();
+  glNamedFramebufferTexture(blit_fbo_.id(), GL_COLOR_ATTACHMENT0, composed_.id(), 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w_, fb_h_);
+  glBlitNamedFramebuffer(blit_fbo_.id(), 0, 0, 0, fb_w_, fb_h_, 0, 0, fb_w_, fb_h_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+  frame_ms_.push_back(static_cast<float>(dt * 1000.0));
+  while (frame_ms_.size() > 240) frame_ms_.pop_front();
+}
+
+int Viewer::run() {
+  const auto [w, h] = parse_size(o_.size);
+  // Everything the command line names is checked before a window opens.
+  std::vector<ScriptCommand> script;
+  std::string script_name = o_.script;
+  if (!o_.script.empty()) script = load_viewer_script(o_.script);
+  if (o_.frames > 0) {  // --frames N [--screenshot F]: a two-line script
+    script.push_back({0, "frames", {std::to_string(o_.frames)}});
+    if (!o_.screenshot.empty()) script.push_back({0, "screenshot", {o_.screenshot}});
+  }
+  if (!o_.screenshot.empty()) image_format_for(o_.screenshot);
+  scripted_ = !script.empty();
+  std::optional<ViewerPreset> preset;
+  if (!o_.preset.empty()) preset = load_preset(o_.preset);
+  Scene probe = load_scene(o_.scene);  // fails before the window opens
+  if (!o_.camera.empty()) probe.camera(o_.camera);
+  {
+    std::unique_ptr<Technique> a = create_technique(o_.technique), b = create_technique(o_.technique_b);
+    sides_[0].technique = std::move(a);
+    sides_[1].technique = std::move(b);
+    apply_sets(o_.sets);  // checks the keys before GL
+  }
+  const int initial_view = o_.view == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(o_.view));
 
   // Owners in creation order, so that destruction runs backwards: GL objects (renderer,
-  // technique) die while the context is still current, the window last.
-  struct GlfwWindow {
-    GLFWwindow* window = nullptr;
-    ~GlfwWindow() {
-      if (window) glfwDestroyWindow(window);
+  // techniques) die while the context is still current, the window last.
+  struct GlfwSession {
+    GLFWwindow** window;
+    ~GlfwSession() {
+      if (*window) glfwDestroyWindow(*window);
       glfwTerminate();
     }
-  };
+  } glfw{&window_};
+  open_window(w, h);
   struct ImGuiSession {
     ~ImGuiSession() {
       ImGui_ImplOpenGL3_Shutdown();
@@ -183,374 +925,68 @@ int run(const Options& o) {
       ImGui::DestroyContext();
     }
   };
-  if (!glfwInit()) throw RuntimeError("GLFW could not initialise (no display?).");
-  GlfwWindow glfw;
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfw.window = glfwCreateWindow(w, h, "ssrlab", nullptr, nullptr);
-  if (!window) throw RuntimeError("no OpenGL 4.5 core window could be created.");
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(o.frames > 0 ? 0 : 1);
-  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)))
-    throw RuntimeError("OpenGL functions could not be loaded.");
-  const gl::ContextInfo info = gl::query_current_context("glfw");
-  std::fprintf(stderr, "ssrlab-view: GL via glfw: %s | %s\n", info.renderer.c_str(), info.version.c_str());
-
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = "imgui.ini";
+  const std::string ini = o_.ini.empty() ? default_ini_path() : o_.ini;
+  ImGui::GetIO().IniFilename = ini.c_str();  // layout kept between runs
   ImGui::StyleColorsDark();
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 450");
   ImGuiSession imgui_session;
+  struct GlOwners {  // released before ImGui and the window go
+    Viewer* v;
+    ~GlOwners() {
+      for (Side& s : v->sides_) s = Side{};
+      v->mask_ref_.reset();
+      v->mask_tex_ = {};
+      v->composed_ = {};
+      v->blit_fbo_ = {};
+      v->diff_prog_ = {};
+      v->renderer_.reset();
+    }
+  } gl_owners{this};
 
   // Live reload reads shaders from the source tree when it is there, else the embedded copy.
-  std::string shader_dir = o.shader_dir;
+  std::string shader_dir = o_.shader_dir;
   if (shader_dir.empty() && fs::is_directory(SSRLAB_SHADER_DIR)) shader_dir = SSRLAB_SHADER_DIR;
-  gl::ShaderSource shaders = shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(shader_dir));
-
-  int fb_w = 0, fb_h = 0;
-  glfwGetFramebufferSize(window, &fb_w, &fb_h);
-  Renderer renderer(scene, std::max(fb_w, 1), std::max(fb_h, 1), shaders);
-  const gl::PassTimer::Clock clock = info.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu;
-  Side sides[2];
-  sides[0].technique = std::move(requested);
-  sides[1].technique = std::move(requested_b);
-  for (Side& s : sides) {
-    s.technique->load(renderer.shaders());
-    s.timer = std::make_unique<gl::PassTimer>(clock);
+  shaders_ = shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(shader_dir));
+  load_scene_spec(o_.scene, o_.camera);
+  for (Side& s : sides_) {
+    s.technique->load(renderer_->shaders());
+    set_reference_progress(*s.technique, [this](double f) { draw_progress("reference", f); });
+    s.timer = std::make_unique<gl::PassTimer>(clock_);
   }
-  gl::Program diff_prog = gl::Program::compute(renderer.shaders(), "render/diff.comp");
-  gl::Texture2D composed;  // what the window and screenshots show (no UI)
-  gl::Framebuffer blit_fbo("viewer blit");
+  diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
+  blit_fbo_ = gl::Framebuffer("viewer blit");
+  view_ = initial_view;
+  compare_ = o_.diff ? CompareDiff : o_.split >= 0 ? CompareSplit : CompareOff;
+  if (o_.split >= 0) split_ = static_cast<float>(o_.split);
+  if (preset) apply_preset(*preset);
+  view_names_ = viewer_view_names();
+  scene_names_ = scene_choices();
 
-  int view = static_cast<int>(initial_view);
-  int compare = o.diff ? CompareDiff : o.split >= 0 ? CompareSplit : CompareOff;
-  float split = o.split >= 0 ? static_cast<float>(o.split) : 0.5f;
-  float diff_scale = 0.25f;
-  bool dragging_divider = false;
-  bool show_ui = true;
-  std::string status;
-  std::string psnr_key;  // the keys of the images the PSNR was computed on
-  double psnr = 0;
-  bool psnr_valid = false;
   double last_time = glfwGetTime();
-  glm::dvec2 last_mouse{0};
-  int frame = 0;
-  std::map<int, bool> key_was_down;
-  std::vector<std::string> view_names_c;
-  for (const auto& n : view_mode_names()) view_names_c.push_back(n);
-
-  auto save = [&](const std::string& path) {
-    write_png(path, composed ? read_rgba8(composed) : renderer.read_display());
-    status = "saved " + path;
-    std::printf("ssrlab-view: %s\n", status.c_str());
-  };
-  auto reload = [&] {
-    try {
-      renderer.reload_shaders();
-      for (Side& s : sides) s.technique->load(renderer.shaders());
-      diff_prog = gl::Program::compute(renderer.shaders(), "render/diff.comp");
-      for (Side& s : sides) s.shown_key.clear();
-      status = "shaders reloaded";
-    } catch (const std::exception& e) {
-      status = e.what();  // the last good programs keep running
-    }
-  };
-
-  // Technique picker + parameter panel of one side.
-  auto technique_panel = [&](Side& side, const char* label) {
-    ImGui::PushID(label);
-    const auto& reg = technique_registry();
-    if (ImGui::BeginCombo(label, side.technique->name().c_str())) {
-      for (const TechniqueInfo& t : reg) {
-        if (ImGui::Selectable(t.name.c_str(), t.name == side.technique->name())) {
-          auto next = t.create();
-          try {
-            next->load(renderer.shaders());
-            side.technique = std::move(next);
-            side.valid = false;
-            side.shown_key.clear();
-            side.request = 0;
-            side.history.clear();
-          } catch (const std::exception& e) {
-            status = e.what();
-          }
-        }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.description.c_str());
+  std::size_t next_command = 0;
+  int frames_left = 0;
+  while (!glfwWindowShouldClose(window_)) {
+    // Scripted runs: commands run between frames, until a `frames N` asks for frames.
+    while (scripted_ && frames_left == 0) {
+      if (next_command == script.size()) return 0;
+      const ScriptCommand& c = script[next_command++];
+      try {
+        if (c.verb == "frames") frames_left = std::stoi(c.args[0]);
+        else run_command(c);
+      } catch (const InputError& e) {
+        throw InputError(c.line > 0 ? script_where(script_name, c) + e.what() : e.what());
       }
-      ImGui::EndCombo();
     }
-    if (on_demand(*side.technique)) {
-      ImGui::BeginDisabled(side.request > 0);
-      if (ImGui::Button("compute")) side.request = 2;
-      ImGui::EndDisabled();
-      ImGui::SameLine();
-      if (side.request > 0) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "computing...");
-      else if (!side.valid) ImGui::TextDisabled("not computed yet (CPU ray tracing: on demand)");
-      else if (side.shown_key != frame_key(orbit.cam, view, renderer.settings.exposure, fb_w, fb_h) +
-                                     "|" + technique_key(*side.technique))
-        ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "stale: the view changed");
-      else ImGui::TextDisabled("up to date");
-    }
-    if (ImGui::TreeNodeEx("parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-      ParamSet params = side.technique->params();
-      draw_param_panel(params);
-      ImGui::TreePop();
-    }
-    ImGui::PopID();
-  };
-
-  while (!glfwWindowShouldClose(window)) {
     glfwPollEvents();
     const double now = glfwGetTime();
-    const float dt = static_cast<float>(now - last_time);
+    frame(now - last_time);
     last_time = now;
-
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    const ImGuiIO& io = ImGui::GetIO();
-
-    // --- input (ImGui 1.86 has no named keys: GLFW key state, edges detected here) ------------
-    auto down = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS; };
-    auto pressed = [&](int key) {
-      const bool d = down(key), was = key_was_down[key];
-      key_was_down[key] = d;
-      return d && !was;
-    };
-    if (!io.WantCaptureKeyboard) {
-      if (pressed(GLFW_KEY_F2)) show_ui = !show_ui;
-      if (pressed(GLFW_KEY_F12)) save(timestamped_name());
-      if (pressed(GLFW_KEY_F5)) reload();
-      float speed = 3.0f * dt * (io.KeyShift ? 4.0f : 1.0f) * (io.KeyCtrl ? 0.25f : 1.0f);
-      const glm::vec3 fwd = glm::normalize(orbit.cam.target - orbit.cam.position);
-      const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
-      glm::vec3 move{0};
-      if (down(GLFW_KEY_W)) move += fwd;
-      if (down(GLFW_KEY_S)) move -= fwd;
-      if (down(GLFW_KEY_D)) move += right;
-      if (down(GLFW_KEY_A)) move -= right;
-      if (down(GLFW_KEY_E)) move.y += 1;
-      if (down(GLFW_KEY_Q)) move.y -= 1;
-      orbit.cam.position += move * speed;
-      orbit.cam.target += move * speed;
-    }
-    glm::dvec2 mouse;
-    glfwGetCursorPos(window, &mouse.x, &mouse.y);
-    const glm::vec2 delta = glm::vec2(mouse - last_mouse);
-    last_mouse = mouse;
-    // The split divider: drag it with the left button (window coordinates, as ImGui's).
-    const float divider_x = split * io.DisplaySize.x;
-    const bool near_divider = compare == CompareSplit && std::abs(static_cast<float>(mouse.x) - divider_x) < 6.0f;
-    if (!io.WantCaptureMouse && near_divider && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
-      dragging_divider = true;
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging_divider = false;
-    if (dragging_divider && io.DisplaySize.x > 0)
-      split = std::clamp(static_cast<float>(mouse.x) / io.DisplaySize.x, 0.0f, 1.0f);
-    if ((near_divider && !io.WantCaptureMouse) || dragging_divider) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
-    if (!io.WantCaptureMouse && !dragging_divider) {
-      if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        orbit.from_camera(orbit.cam);
-        orbit.yaw -= delta.x * 0.005f;
-        orbit.pitch += delta.y * 0.005f;
-        orbit.update_position();
-      }
-      if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
-        const glm::vec3 fwd = glm::normalize(orbit.cam.target - orbit.cam.position);
-        const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
-        const glm::vec3 up = glm::cross(right, fwd);
-        const float k = glm::length(orbit.cam.target - orbit.cam.position) * 0.002f;
-        const glm::vec3 pan = (-right * delta.x + up * delta.y) * k;
-        orbit.cam.position += pan;
-        orbit.cam.target += pan;
-      }
-      if (io.MouseWheel != 0) {
-        orbit.from_camera(orbit.cam);
-        orbit.distance = std::clamp(orbit.distance * std::pow(0.9f, io.MouseWheel), 0.05f, 1000.0f);
-        orbit.update_position();
-      }
-    }
-
-    // --- UI -----------------------------------------------------------------------------------
-    if (compare == CompareSplit) {  // the divider and labels are UI: never in screenshots
-      ImDrawList* bg = ImGui::GetBackgroundDrawList();
-      const float x = split * io.DisplaySize.x;
-      bg->AddLine(ImVec2(x, 0), ImVec2(x, io.DisplaySize.y),
-                  dragging_divider ? IM_COL32(255, 220, 80, 255) : IM_COL32(255, 255, 255, 200), 2.0f);
-      if (show_ui) {
-        const std::string right_label = "B: " + sides[1].technique->name();
-        bg->AddText(ImVec2(x - 8 - ImGui::CalcTextSize(("A: " + sides[0].technique->name()).c_str()).x,
-                           io.DisplaySize.y - 22), IM_COL32(255, 255, 255, 230),
-                    ("A: " + sides[0].technique->name()).c_str());
-        bg->AddText(ImVec2(x + 8, io.DisplaySize.y - 22), IM_COL32(255, 255, 255, 230), right_label.c_str());
-      }
-    }
-    if (show_ui) {
-      ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-      ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
-      ImGui::Begin("ssrlab");
-      ImGui::Text("%s", info.renderer.c_str());
-      ImGui::Combo("view", &view, [](void* data, int i, const char** out) {
-        *out = static_cast<std::vector<std::string>*>(data)->at(static_cast<std::size_t>(i)).c_str();
-        return true;
-      }, &view_names_c, static_cast<int>(view_names_c.size()));
-      ImGui::SliderFloat("exposure", &renderer.settings.exposure, -8.0f, 8.0f, "%.2f stops");
-      if (ImGui::BeginCombo("camera", orbit.cam.name.c_str())) {
-        for (const Camera& c : scene.cameras)
-          if (ImGui::Selectable(c.name.c_str(), c.name == orbit.cam.name)) orbit.from_camera(c);
-        ImGui::EndCombo();
-      }
-      ImGui::TextUnformatted("compare:");
-      ImGui::SameLine();
-      ImGui::RadioButton("A only", &compare, CompareOff);
-      ImGui::SameLine();
-      ImGui::RadioButton("split", &compare, CompareSplit);
-      ImGui::SameLine();
-      ImGui::RadioButton("difference", &compare, CompareDiff);
-      if (compare == CompareSplit) ImGui::SliderFloat("divider", &split, 0.0f, 1.0f, "%.3f");
-      if (compare == CompareDiff) {
-        ImGui::SliderFloat("full scale", &diff_scale, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean |A - B| over RGB (display values) shown as the hottest colour");
-      }
-      if (compare != CompareOff) {
-        if (sides[0].request > 0 || sides[1].request > 0) ImGui::Text("PSNR A vs B: computing...");
-        else if (!psnr_valid) ImGui::TextDisabled("PSNR A vs B: -");
-        else if (std::isinf(psnr)) ImGui::Text("PSNR A vs B: identical");
-        else ImGui::Text("PSNR A vs B: %.2f dB", psnr);
-      }
-      if (ImGui::CollapsingHeader("technique A", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(sides[0], "A");
-      if (compare != CompareOff && ImGui::CollapsingHeader("technique B", ImGuiTreeNodeFlags_DefaultOpen))
-        technique_panel(sides[1], "B");
-      if (ImGui::CollapsingHeader("timing", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const char* clock_name = sides[0].timer->clock_name();
-        for (int i = 0; i < (compare != CompareOff ? 2 : 1); ++i) {
-          Side& s = sides[i];
-          ImGui::PushID(i);
-          ImGui::Text("%s: %s", i == 0 ? "A" : "B", s.technique->name().c_str());
-          double total = 0, tech = 0;
-          for (const auto& p : s.last_times) {
-            ImGui::Text("  %-12s %7.3f ms", p.name.c_str(), p.ms);
-            total += p.ms;
-            if (!is_frame_pass(p.name)) tech += p.ms;
-          }
-          ImGui::Text("  %-12s %7.3f ms (%s clock)", "total", total, clock_name);
-          if (!s.history.empty()) {
-            const std::vector<float> h(s.history.begin(), s.history.end());
-            const float hi = *std::max_element(h.begin(), h.end());
-            char overlay[64];
-            std::snprintf(overlay, sizeof overlay, "technique %.3f ms (%s)", tech, clock_name);
-            ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f,
-                             std::max(hi * 1.2f, 1e-3f), ImVec2(0, 50));
-          }
-          ImGui::PopID();
-        }
-        ImGui::Text("frame %.1f ms", static_cast<double>(dt) * 1000.0);
-        if (clock == gl::PassTimer::Clock::Cpu)
-          ImGui::TextDisabled("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
-      }
-      if (!status.empty()) ImGui::TextWrapped("%s", status.c_str());
-      ImGui::End();
-    }
-    ImGui::Render();
-
-    // --- frame --------------------------------------------------------------------------------
-    glfwGetFramebufferSize(window, &fb_w, &fb_h);
-    if (fb_w > 0 && fb_h > 0) {  // minimised windows have a 0x0 framebuffer: skip the frame
-      renderer.resize(fb_w, fb_h);
-      if (!composed || composed.width() != fb_w || composed.height() != fb_h) {
-        composed = gl::Texture2D("viewer composed", GL_RGBA8, fb_w, fb_h);
-        for (Side& s : sides) {
-          s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, fb_w, fb_h);
-          const std::uint8_t black[4] = {0, 0, 0, 255};
-          glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
-          s.valid = false;
-          s.shown_key.clear();
-        }
-        psnr_valid = false;
-        psnr_key.clear();
-      }
-      const std::string fkey = frame_key(orbit.cam, view, renderer.settings.exposure, fb_w, fb_h);
-      const int n_sides = compare == CompareOff ? 1 : 2;
-      bool inputs_done = false;
-      for (int i = 0; i < n_sides; ++i) {
-        Side& s = sides[i];
-        if (s.request == 2) { s.request = 1; continue; }  // one frame showing "computing..."
-        // On-demand techniques run when asked (and once in the scripted --frames mode).
-        const bool run_it = !on_demand(*s.technique) || s.request == 1 || (o.frames > 0 && !s.valid);
-        if (!run_it) continue;
-        s.request = 0;
-        s.timer->begin_frame();
-        if (!inputs_done) renderer.render_inputs(orbit.cam, s.timer.get());
-        inputs_done = true;
-        renderer.run_technique(*s.technique, s.timer.get());
-        renderer.composite_and_display(static_cast<ViewMode>(view), s.timer.get());
-        s.timer->end_frame();
-        glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
-        glCopyImageSubData(renderer.display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D,
-                           0, 0, 0, 0, fb_w, fb_h, 1);
-        s.valid = true;
-        s.shown_key = fkey + "|" + technique_key(*s.technique);
-        if (!s.timer->completed().empty()) {
-          s.last_times = s.timer->completed().back();
-          s.timer->completed().clear();
-          double tech = 0;
-          for (const auto& p : s.last_times)
-            if (!is_frame_pass(p.name)) tech += p.ms;
-          s.history.push_back(static_cast<float>(tech));
-          while (s.history.size() > 120) s.history.pop_front();
-        }
-      }
-      // Compose A | B (split), the heat map (difference), or A alone.
-      if (compare == CompareDiff) {
-        glUseProgram(diff_prog.id());
-        glBindTextureUnit(20, sides[0].copy.id());
-        glBindTextureUnit(21, sides[1].copy.id());
-        glBindImageTexture(3, composed.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glUniform1f(0, diff_scale);
-        diff_prog.dispatch_2d(fb_w, fb_h);
-        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-        glBindTextureUnit(20, 0);
-        glBindTextureUnit(21, 0);
-      } else {
-        glCopyImageSubData(sides[0].copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed.id(), GL_TEXTURE_2D,
-                           0, 0, 0, 0, fb_w, fb_h, 1);
-        const int x0 = std::clamp(static_cast<int>(std::lround(split * static_cast<float>(fb_w))), 0, fb_w);
-        if (compare == CompareSplit && x0 < fb_w)
-          glCopyImageSubData(sides[1].copy.id(), GL_TEXTURE_2D, 0, x0, 0, 0, composed.id(), GL_TEXTURE_2D,
-                             0, x0, 0, 0, fb_w - x0, fb_h, 1);
-      }
-      // PSNR of A vs B, on the CPU, whenever either image changed.
-      if (compare != CompareOff && sides[0].valid && sides[1].valid) {
-        const std::string key = sides[0].shown_key + "#" + sides[1].shown_key;
-        if (key != psnr_key) {
-          psnr = psnr8(read_rgba8(sides[0].copy), read_rgba8(sides[1].copy));
-          psnr_valid = true;
-          psnr_key = key;
-        }
-      } else if (compare != CompareOff) {
-        psnr_valid = false;
-        psnr_key.clear();
-      }
-      glNamedFramebufferTexture(blit_fbo.id(), GL_COLOR_ATTACHMENT0, composed.id(), 0);
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, fb_w, fb_h);
-      glBlitNamedFramebuffer(blit_fbo.id(), 0, 0, 0, fb_w, fb_h, 0, 0, fb_w, fb_h,
-                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      glfwSwapBuffers(window);
-      ++frame;
-      if (o.frames > 0 && frame >= o.frames) {
-        if (!o.screenshot.empty()) save(o.screenshot);
-        if (compare != CompareOff && psnr_valid)
-          std::printf("ssrlab-view: PSNR A vs B %.2f dB\n", psnr);
-        break;
-      }
-    }
+    if (frames_left > 0 && --frames_left == 0 && compare_ != CompareOff && psnr_valid_)
+      std::printf("ssrlab-view: PSNR A vs B %.2f dB\n", psnr_);
   }
-
   return 0;
 }
 
@@ -560,17 +996,20 @@ int main(int argc, char** argv) {
   CLI::App app{"ssrlab-view: interactive screen-space reflection viewer"};
   Options o;
   app.add_option("--scene", o.scene, "Built-in scene name or a .json/.obj path.")->capture_default_str();
-  app.add_option("--technique", o.technique, "Technique to start with.")->capture_default_str();
+  app.add_option("--technique", o.technique, "Technique A (the left of a split).")->capture_default_str();
   app.add_option("--set", o.sets, "Parameter assignment technique.key=value (repeatable).");
   app.add_option("--size", o.size, "Window size WIDTHxHEIGHT.")->capture_default_str();
   app.add_option("--camera", o.camera, "Named camera of the scene.");
-  app.add_option("--view", o.view, "Initial view (final, reflection, confidence, lit, ...).")->capture_default_str();
-  app.add_option("--frames", o.frames, "Render this many frames, then exit (0: interactive).")->check(CLI::NonNegativeNumber);
+  app.add_option("--view", o.view, "Initial view (final, reflection, confidence, lit, ..., traceable).")->capture_default_str();
+  app.add_option("--frames", o.frames, "Render this many frames, then exit (0: interactive).")->check(CLI::Range(0, 100000));
   app.add_option("--screenshot", o.screenshot, "With --frames: write the last frame to this PNG.");
   app.add_option("--shaders", o.shader_dir, "Shader directory for live reload (F5).");
   app.add_option("--technique-b", o.technique_b, "Technique B (right of the split, or diffed against A).")->capture_default_str();
   app.add_option("--split", o.split, "Start in split view with the divider at X (0..1 of the width).")->check(CLI::Range(0.0, 1.0));
   app.add_flag("--diff", o.diff, "Start in difference mode: a heat map of |A - B| and the PSNR.");
+  app.add_option("--preset", o.preset, "Start from a JSON preset saved by the viewer.");
+  app.add_option("--script", o.script, "Run the commands of this file (see viewer_script.h), then exit.");
+  app.add_option("--ini", o.ini, "ImGui layout file (default: ~/.config/ssrlab/imgui.ini).");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -580,7 +1019,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    return run(o);
+    return Viewer(o).run();
   } catch (const InputError& e) {
     std::fprintf(stderr, "ssrlab-view: %s\n", e.what());
     return 2;

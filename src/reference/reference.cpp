@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -45,6 +46,7 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override;
 
   ReferenceOutputs outputs() const { return {&ideal_, &classes_, rays_}; }
+  std::function<void(double)> progress;
 
  private:
   gl::Program program_;
@@ -56,6 +58,10 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
 };
 
 std::unique_ptr<Technique> make_reference_technique() { return std::make_unique<ReferenceTechnique>(); }
+
+void set_reference_progress(Technique& t, std::function<void(double)> progress) {
+  if (auto* r = dynamic_cast<ReferenceTechnique*>(&t)) r->progress = std::move(progress);
+}
 
 ReferenceOutputs reference_outputs(const Technique& t) {
   if (auto* r = dynamic_cast<const ReferenceTechnique*>(&t)) return r->outputs();
@@ -244,6 +250,12 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     next_row = batch_y0;
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
+    // The workers never touch the GL, so this (GL) thread may draw a progress bar meanwhile.
+    if (progress)
+      for (int taken; (taken = next_row.load()) < batch_y1;) {
+        progress(static_cast<double>(taken) / h);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
     for (auto& t : pool) t.join();
 
     pixels.clear();

@@ -8,6 +8,7 @@
 // screen-space ideal: the lit colour at the true hit's pixel, the best any screen-space tracer
 // could return.
 #pragma once
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -28,5 +29,10 @@ struct ReferenceOutputs {
   std::size_t rays = 0;                     // rays traced in the last run
 };
 ReferenceOutputs reference_outputs(const Technique& t);
+
+// While a reference technique traces, `progress` is called on the calling (GL) thread about 20
+// times a second with the share of rows taken so far (0..1): the viewer draws its progress bar
+// from it. Does nothing for other techniques; an empty function turns it off.
+void set_reference_progress(Technique& t, std::function<void(double)> progress);
 
 }  // namespace ssr

@@ -83,8 +83,12 @@ GpuScene::GpuScene(const Scene& scene) : vao_("scene vao") {
   attrib(2, 2, offsetof(Vertex, uv));
   attrib(3, 4, offsetof(Vertex, tangent));
 
+  upload_lights(scene.lights);
+}
+
+void GpuScene::upload_lights(const std::vector<Light>& scene_lights) {
   std::vector<shared::GpuLight> lights;
-  for (const Light& l : scene.lights) {
+  for (const Light& l : scene_lights) {
     shared::GpuLight g{};
     if (l.type == Light::Type::Point)
       g.position_type = glm::vec4(l.position, 0.0f);

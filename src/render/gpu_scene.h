@@ -15,6 +15,8 @@ class GpuScene {
   // behind them must stay visible to the tracers.
   void draw(bool transparent) const;
   bool has_transparent() const { return has_transparent_; }
+  // Replaces the lights (the viewer edits them live); the caller validated them.
+  void upload_lights(const std::vector<Light>& lights);
   GLuint lights_ssbo() const { return lights_.id(); }
   int light_count() const { return light_count_; }
   // The albedo (sRGB, mip-mapped) texture of scene image i.

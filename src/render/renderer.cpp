@@ -42,6 +42,19 @@ Renderer::Renderer(const Scene& scene, int width, int height, gl::ShaderSource s
 
 Renderer::~Renderer() = default;
 
+void Renderer::set_lighting(const std::vector<Light>& lights, const Environment& environment, float ambient) {
+  Scene probe;  // only the lighting part is checked: the geometry did not change
+  probe.name = scene_.name;
+  probe.lights = lights;
+  probe.environment = environment;
+  probe.ambient = ambient;
+  validate_lighting(probe);
+  scene_.lights = lights;
+  scene_.environment = environment;
+  scene_.ambient = ambient;
+  gpu_scene_->upload_lights(lights);
+}
+
 void Renderer::reload_shaders() {
   // Build all first, then swap: a compile error leaves the running programs untouched.
   auto gbuffer = gl::Program::graphics(shaders_, "render/gbuffer.vert", "render/gbuffer.frag");

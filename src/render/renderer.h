@@ -53,6 +53,9 @@ class Renderer {
   // per-scene data key it on this, never on an address that a later scene may reuse.
   std::uint64_t scene_id() const { return scene_id_; }
   const gl::ShaderSource& shaders() const { return shaders_; }
+  // Replaces the lights, environment and ambient (live editing); the geometry stays. Throws
+  // InputError, changing nothing, when the result would not pass validate().
+  void set_lighting(const std::vector<Light>& lights, const Environment& environment, float ambient);
   // Rebuilds the fixed passes' programs (live reload); keeps the old ones on failure and throws.
   void reload_shaders();
 

@@ -40,17 +40,35 @@ bool unit(const glm::vec3& v) { return finite(v) && std::abs(glm::length(v) - 1.
 
 }  // namespace
 
+void validate_lighting(const Scene& s) {
+  if (s.lights.size() > static_cast<std::size_t>(Scene::kMaxLights))
+    fail(s, "has " + std::to_string(s.lights.size()) + " lights, more than the " +
+                std::to_string(Scene::kMaxLights) + " supported");
+  if (!finite(s.ambient) || s.ambient < 0.0f) fail(s, "ambient must be finite and >= 0");
+  for (const Light& l : s.lights) {
+    if (!finite(l.position) || !finite(l.color) || !finite(l.intensity) || !finite(l.range))
+      fail(s, "a light has a non-finite value");
+    if (l.intensity < 0 || l.color.x < 0 || l.color.y < 0 || l.color.z < 0)
+      fail(s, "a light has a negative colour or intensity");
+    if (l.type == Light::Type::Point && l.range <= 0) fail(s, "a point light needs range > 0");
+    if (l.type == Light::Type::Directional && !unit(l.direction))
+      fail(s, "a directional light needs a unit direction");
+  }
+
+  const Environment& e = s.environment;
+  if (!finite(e.zenith) || !finite(e.horizon) || !finite(e.ground) || !finite(e.constant) ||
+      !finite(e.intensity) || e.intensity < 0)
+    fail(s, "environment has a non-finite or negative value");
+}
+
 void validate(const Scene& s) {
   if (s.meshes.empty()) fail(s, "has no meshes");
   if (s.materials.empty()) fail(s, "has no materials");
   if (s.cameras.empty()) fail(s, "has no camera");
-  if (s.lights.size() > static_cast<std::size_t>(Scene::kMaxLights))
-    fail(s, "has " + std::to_string(s.lights.size()) + " lights, more than the " +
-                std::to_string(Scene::kMaxLights) + " supported");
   if (s.reflectors.size() > static_cast<std::size_t>(Scene::kMaxReflectors))
     fail(s, "has " + std::to_string(s.reflectors.size()) + " reflectors, more than the " +
                 std::to_string(Scene::kMaxReflectors) + " supported");
-  if (!finite(s.ambient) || s.ambient < 0.0f) fail(s, "ambient must be finite and >= 0");
+  validate_lighting(s);
 
   for (std::size_t i = 0; i < s.images.size(); ++i) {
     const Image& im = s.images[i];
@@ -111,16 +129,6 @@ void validate(const Scene& s) {
       fail(s, where + "must have positive half extents (zero-area reflectors are not allowed)");
   }
 
-  for (const Light& l : s.lights) {
-    if (!finite(l.position) || !finite(l.color) || !finite(l.intensity) || !finite(l.range))
-      fail(s, "a light has a non-finite value");
-    if (l.intensity < 0 || l.color.x < 0 || l.color.y < 0 || l.color.z < 0)
-      fail(s, "a light has a negative colour or intensity");
-    if (l.type == Light::Type::Point && l.range <= 0) fail(s, "a point light needs range > 0");
-    if (l.type == Light::Type::Directional && !unit(l.direction))
-      fail(s, "a directional light needs a unit direction");
-  }
-
   for (const Camera& c : s.cameras) {
     const std::string where = "camera '" + c.name + "' ";
     if (!finite(c.position) || !finite(c.target) || !finite(c.up))
@@ -135,11 +143,6 @@ void validate(const Scene& s) {
         c.far_plane <= c.near_plane)
       fail(s, where + "needs 0 < near < far");
   }
-
-  const Environment& e = s.environment;
-  if (!finite(e.zenith) || !finite(e.horizon) || !finite(e.ground) || !finite(e.constant) ||
-      !finite(e.intensity) || e.intensity < 0)
-    fail(s, "environment has a non-finite or negative value");
 }
 
 }  // namespace ssr

@@ -111,5 +111,7 @@ struct Scene {
 // Checks every invariant above (indices in range, finite values, ranges, unit vectors, counts)
 // and throws InputError with one sentence naming the first problem. Loaders call it last.
 void validate(const Scene& scene);
+// The lights, environment and ambient part of validate() (the viewer edits those live).
+void validate_lighting(const Scene& scene);
 
 }  // namespace ssr

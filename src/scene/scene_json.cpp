@@ -36,6 +36,8 @@
 // translate). Explicit reflector rectangles are in world space (not moved by the transform);
 // the normal is cross(bitangent, tangent).
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -43,6 +45,7 @@
 #include <sstream>
 
 #include "scene/meshgen.h"
+#include "scene/scene_json.h"
 #include "scene/scene_io.h"
 #include "scene/scene_io_internal.h"
 
@@ -59,11 +62,13 @@ constexpr std::uintmax_t kMaxJsonBytes = 16ull << 20;  // 16 MiB
 // Reading one JSON scene file: typed getters that name the file and the key on every error.
 class JsonReader {
  public:
-  explicit JsonReader(fs::path file) : file_(std::move(file)) {}
+  explicit JsonReader(fs::path file) : file_(std::move(file)), label_("scene file " + q(file_)) {}
+  // Files that embed scene-file pieces (viewer presets) start the messages with their own label.
+  JsonReader(fs::path file, std::string label) : file_(std::move(file)), label_(std::move(label)) {}
   const fs::path& file() const { return file_; }
 
   [[noreturn]] void fail_at(const std::string& where, const std::string& what) const {
-    fail("scene file " + q(file_) + ": " + q(where) + " " + what);
+    fail(label_ + ": " + q(where) + " " + what);
   }
 
   static std::string join(const std::string& parent, const std::string& key) {
@@ -90,7 +95,7 @@ class JsonReader {
       if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
       std::string list;
       for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      fail("scene file " + q(file_) + ": unknown key " + q(join(where, it.key())) + for_what +
+      fail(label_ + ": unknown key " + q(join(where, it.key())) + for_what +
            " (allowed here: " + list + ")");
     }
   }
@@ -176,12 +181,11 @@ class JsonReader {
 
  private:
   fs::path file_;
+  std::string label_;  // starts every message
 };
 
-json parse_json_file(const fs::path& path) {
-  const std::string text = read_file(path, kMaxJsonBytes, "scene file");
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    fail("scene file " + q(path) + " is empty");
+json parse_json_text(const std::string& text, const std::string& label) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail(label + " is empty");
   // Duplicate keys are an error (nlohmann keeps the last one silently).
   std::vector<std::set<std::string>> seen;
   std::string duplicate;
@@ -204,13 +208,23 @@ json parse_json_file(const fs::path& path) {
     static const std::regex re(R"(at line (\d+), column (\d+): (.*)$)");
     std::smatch m;
     if (std::regex_search(what, m, re))
-      fail("scene file " + q(path) + " has a JSON syntax error at line " + m[1].str() +
+      fail(label + " has a JSON syntax error at line " + m[1].str() +
            ", column " + (m[2].str() == "0" ? std::string("1") : m[2].str()) + ": " + m[3].str());
-    fail("scene file " + q(path) + " has a JSON syntax error near byte " + std::to_string(e.byte));
+    fail(label + " has a JSON syntax error near byte " + std::to_string(e.byte));
+  } catch (const json::exception& e) {
+    // Not a parse_error but still bad input: a number beyond double's range throws
+    // out_of_range.406 (found by fuzzing). Drop the "[json.exception.*] " prefix.
+    std::string what = e.what();
+    if (const std::size_t end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
+    fail(label + " cannot be read: " + what);
   }
-  if (!duplicate.empty()) fail("scene file " + q(path) + " has the key " + q(duplicate) + " twice");
-  if (!j.is_object()) fail("scene file " + q(path) + " must hold a JSON object");
+  if (!duplicate.empty()) fail(label + " has the key " + q(duplicate) + " twice");
+  if (!j.is_object()) fail(label + " must hold a JSON object");
   return j;
+}
+
+json parse_json_file(const fs::path& path) {
+  return parse_json_text(read_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
 }
 
 glm::mat4 read_transform(const JsonReader& r, const json& obj, const std::string& where) {
@@ -261,8 +275,8 @@ int add_reflector(Scene& s, const JsonReader& r, const std::string& where, const
   return static_cast<int>(s.reflectors.size());
 }
 
-void read_environment(const JsonReader& r, const json& j, Environment& env) {
-  const std::string where = "environment";
+void read_environment(const JsonReader& r, const json& j, Environment& env,
+                      const std::string& where = "environment") {
   r.object(j, where);
   const std::string type = r.string(j, where, "type", "sky");
   if (type == "sky") {
@@ -276,7 +290,7 @@ void read_environment(const JsonReader& r, const json& j, Environment& env) {
     env.type = Environment::Type::Constant;
     env.constant = r.vec3(j, where, "color", env.constant, 0.0f, 1e6f);
   } else {
-    r.fail_at("environment.type", "must be \"sky\" or \"constant\", not " + q(type));
+    r.fail_at(where + ".type", "must be \"sky\" or \"constant\", not " + q(type));
   }
   env.intensity = r.number(j, where, "intensity", env.intensity, 0.0f, 1e6f);
 }
@@ -424,31 +438,54 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s) {
   }
 }
 
+Light read_light(const JsonReader& r, const json& j, const std::string& where) {
+  const json& l = r.object(j, where);
+  if (!l.contains("type")) r.fail_at(where + ".type", "is required");
+  const std::string type = r.string(l["type"], where + ".type");
+  Light light;
+  if (type == "point") {
+    r.keys(l, where, {"type", "position", "color", "intensity", "range"});
+    light.type = Light::Type::Point;
+    light.position = r.required_vec3(l, where, "position");
+    light.range = r.number(l, where, "range", light.range, 1e-6f, 1e7f);
+  } else if (type == "directional") {
+    r.keys(l, where, {"type", "direction", "color", "intensity"});
+    light.type = Light::Type::Directional;
+    if (!l.contains("direction")) r.fail_at(where + ".direction", "is required");
+    light.direction = r.direction(l["direction"], where + ".direction");
+  } else {
+    r.fail_at(where + ".type", "must be \"point\" or \"directional\", not " + q(type));
+  }
+  light.color = r.vec3(l, where, "color", light.color, 0.0f, 1e6f);
+  light.intensity = r.number(l, where, "intensity", light.intensity, 0.0f, 1e9f);
+  return light;
+}
+
 void read_lights(const JsonReader& r, const json& j, Scene& s) {
   r.array(j, "lights");
-  for (std::size_t i = 0; i < j.size(); ++i) {
-    const std::string where = JsonReader::index("lights", i);
-    const json& l = r.object(j[i], where);
-    if (!l.contains("type")) r.fail_at(where + ".type", "is required");
-    const std::string type = r.string(l["type"], where + ".type");
-    Light light;
-    if (type == "point") {
-      r.keys(l, where, {"type", "position", "color", "intensity", "range"});
-      light.type = Light::Type::Point;
-      light.position = r.required_vec3(l, where, "position");
-      light.range = r.number(l, where, "range", light.range, 1e-6f, 1e7f);
-    } else if (type == "directional") {
-      r.keys(l, where, {"type", "direction", "color", "intensity"});
-      light.type = Light::Type::Directional;
-      if (!l.contains("direction")) r.fail_at(where + ".direction", "is required");
-      light.direction = r.direction(l["direction"], where + ".direction");
-    } else {
-      r.fail_at(where + ".type", "must be \"point\" or \"directional\", not " + q(type));
-    }
-    light.color = r.vec3(l, where, "color", light.color, 0.0f, 1e6f);
-    light.intensity = r.number(l, where, "intensity", light.intensity, 0.0f, 1e9f);
-    s.lights.push_back(light);
-  }
+  for (std::size_t i = 0; i < j.size(); ++i)
+    s.lights.push_back(read_light(r, j[i], JsonReader::index("lights", i)));
+}
+
+Camera read_camera(const JsonReader& r, const json& j, const std::string& where,
+                   const std::string& default_name) {
+  const json& c = r.object(j, where);
+  r.keys(c, where, {"name", "position", "target", "up", "fov_y", "near", "far"});
+  Camera cam;
+  cam.name = r.string(c, where, "name", default_name);
+  cam.position = r.vec3(c, where, "position", cam.position);
+  cam.target = r.vec3(c, where, "target", cam.target);
+  if (c.contains("up")) cam.up = r.direction(c["up"], where + ".up");
+  cam.fov_y_deg = r.number(c, where, "fov_y", cam.fov_y_deg, 1.001f, 178.999f);
+  cam.near_plane = r.number(c, where, "near", cam.near_plane, 1e-6f, 1e7f);
+  cam.far_plane = r.number(c, where, "far", cam.far_plane, 1e-6f, 1e7f);
+  if (!(cam.far_plane > cam.near_plane)) r.fail_at(where + ".far", "must be greater than near");
+  if (glm::length(cam.target - cam.position) < 1e-6f)
+    r.fail_at(where + ".target", "must differ from the position");
+  if (glm::length(glm::cross(glm::normalize(cam.target - cam.position), cam.up)) <
+      1e-6f * glm::length(cam.up))
+    r.fail_at(where + ".up", "must not be parallel to the view direction");
+  return cam;
 }
 
 void read_cameras(const JsonReader& r, const json& j, Scene& s) {
@@ -456,26 +493,11 @@ void read_cameras(const JsonReader& r, const json& j, Scene& s) {
   if (j.empty()) r.fail_at("cameras", "must not be empty (leave it out to frame the scene)");
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string where = JsonReader::index("cameras", i);
-    const json& c = r.object(j[i], where);
-    r.keys(c, where, {"name", "position", "target", "up", "fov_y", "near", "far"});
-    Camera cam;
-    cam.name = r.string(c, where, "name", i == 0 ? "default" : "camera" + std::to_string(i));
+    Camera cam = read_camera(r, j[i], where, i == 0 ? "default" : "camera" + std::to_string(i));
     for (const Camera& other : s.cameras)
       if (other.name == cam.name)
         r.fail_at(where + ".name", "repeats the camera name " + q(cam.name));
-    cam.position = r.vec3(c, where, "position", cam.position);
-    cam.target = r.vec3(c, where, "target", cam.target);
-    if (c.contains("up")) cam.up = r.direction(c["up"], where + ".up");
-    cam.fov_y_deg = r.number(c, where, "fov_y", cam.fov_y_deg, 1.001f, 178.999f);
-    cam.near_plane = r.number(c, where, "near", cam.near_plane, 1e-6f, 1e7f);
-    cam.far_plane = r.number(c, where, "far", cam.far_plane, 1e-6f, 1e7f);
-    if (!(cam.far_plane > cam.near_plane)) r.fail_at(where + ".far", "must be greater than near");
-    if (glm::length(cam.target - cam.position) < 1e-6f)
-      r.fail_at(where + ".target", "must differ from the position");
-    if (glm::length(glm::cross(glm::normalize(cam.target - cam.position), cam.up)) <
-        1e-6f * glm::length(cam.up))
-      r.fail_at(where + ".up", "must not be parallel to the view direction");
-    s.cameras.push_back(cam);
+    s.cameras.push_back(std::move(cam));
   }
 }
 
@@ -514,5 +536,82 @@ Scene load_scene_json(const fs::path& path) {
   validate_file(s, path);
   return s;
 }
+
+// ---- pieces shared with other JSON files (scene_json.h) -------------------------------------
+
+namespace scene_json {
+
+json parse(const std::string& text, const std::string& label) {
+  return parse_json_text(text, label);
+}
+
+Light read_light(const json& j, const std::string& label, const std::string& where) {
+  return ::ssr::read_light(JsonReader("", label), j, where);
+}
+
+Environment read_environment(const json& j, const std::string& label, const std::string& where) {
+  Environment env;
+  ::ssr::read_environment(JsonReader("", label), j, env, where);
+  return env;
+}
+
+Camera read_camera(const json& j, const std::string& label, const std::string& where,
+                   const std::string& default_name) {
+  return ::ssr::read_camera(JsonReader("", label), j, where, default_name);
+}
+
+double json_float(float v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::strtod(std::string(buf, r.ptr).c_str(), nullptr);
+}
+
+nlohmann::ordered_json json_vec3(const glm::vec3& v) {
+  return {json_float(v.x), json_float(v.y), json_float(v.z)};
+}
+
+nlohmann::ordered_json write_light(const Light& l) {
+  nlohmann::ordered_json j;
+  if (l.type == Light::Type::Point) {
+    j["type"] = "point";
+    j["position"] = json_vec3(l.position);
+  } else {
+    j["type"] = "directional";
+    j["direction"] = json_vec3(l.direction);
+  }
+  j["color"] = json_vec3(l.color);
+  j["intensity"] = json_float(l.intensity);
+  if (l.type == Light::Type::Point) j["range"] = json_float(l.range);
+  return j;
+}
+
+nlohmann::ordered_json write_environment(const Environment& e) {
+  nlohmann::ordered_json j;
+  if (e.type == Environment::Type::Sky) {
+    j["type"] = "sky";
+    j["zenith"] = json_vec3(e.zenith);
+    j["horizon"] = json_vec3(e.horizon);
+    j["ground"] = json_vec3(e.ground);
+  } else {
+    j["type"] = "constant";
+    j["color"] = json_vec3(e.constant);
+  }
+  j["intensity"] = json_float(e.intensity);
+  return j;
+}
+
+nlohmann::ordered_json write_camera(const Camera& c) {
+  nlohmann::ordered_json j;
+  if (!c.name.empty()) j["name"] = c.name;
+  j["position"] = json_vec3(c.position);
+  j["target"] = json_vec3(c.target);
+  j["up"] = json_vec3(c.up);
+  j["fov_y"] = json_float(c.fov_y_deg);
+  j["near"] = json_float(c.near_plane);
+  j["far"] = json_float(c.far_plane);
+  return j;
+}
+
+}  // namespace scene_json
 
 }  // namespace ssr

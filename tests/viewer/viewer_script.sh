@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# The viewer's scripted input, presets, on-demand reference, traceable mask, resize and
+# minimise in a real X window (Xvfb); and its errors: a bad script or preset exits 2 with one
+# sentence naming the file and line. Usage: viewer_script.sh SSRLAB_VIEW OUTDIR
+set -eu
+viewer=$1; outdir=$2
+here=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$outdir"; mkdir -p "$outdir"; cd "$outdir"
+command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (apt-get install xvfb)"; exit 1; }
+view() { xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" "$@"; }
+
+cat > run.txt <<'SCRIPT'
+technique hiz
+set hiz.max_iterations=64
+technique-b reference
+set reference.samples=4
+compare diff
+exposure 0.5
+frames 2
+screenshot diff-ref.png
+preset-save p.json
+# change everything, then the preset brings it back
+technique none
+technique-b linear
+compare off
+exposure 0
+preset-load p.json
+frames 2
+screenshot diff-ref-again.png
+compare off
+view traceable
+frames 1
+screenshot traceable.png
+view final
+resize 200x120
+frames 3
+screenshot small.png
+minimise
+frames 2
+restore
+frames 2
+ambient 0
+frames 1
+screenshot dark.png
+SCRIPT
+view --scene gallery --size 320x180 --script run.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+cat log.txt
+[ -s imgui.ini ] || { echo "imgui.ini was not kept"; exit 1; }
+ls -a | grep -q 'p.json.*tmp' && { echo "a temporary preset file was left behind"; exit 1; }
+python3 - "$here" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[1])
+from png import read_png
+p = json.load(open('p.json'))
+text = json.dumps(p)
+assert 'hiz' in text and 'reference' in text, 'the preset lacks the techniques'
+assert '64' in text, 'the preset lacks hiz.max_iterations=64'
+a, b = read_png('diff-ref.png'), read_png('diff-ref-again.png')
+assert a[3] == b[3], 'the preset did not restore the same frame'
+heat = sum(1 for row in a[3] for x in range(a[0]) if row[x * a[2]] != row[x * a[2] + 2])
+assert heat > 0, 'hiz vs reference shows no heat at all'
+t = read_png('traceable.png')
+green = sum(1 for row in t[3] for x in range(t[0]) if row[x*t[2]:x*t[2]+3] == bytearray([40, 190, 80]))
+print(f'traceable mask: {green} traceable (green) pixels of {t[0] * t[1]}')
+assert green > 1000, 'the traceable mask shows no traceable pixels on the mirror floor'
+s = read_png('small.png')
+assert (s[0], s[1]) == (200, 120), f'resize: screenshot is {s[0]}x{s[1]}'
+d = read_png('dark.png')
+mean = lambda im: sum(sum(r) for r in im[3]) / (im[0] * im[1] * im[2])
+print(f'mean value: ambient 0.3 -> {mean(s):.1f}, ambient 0 -> {mean(d):.1f}')
+assert mean(d) < mean(s), 'ambient 0 did not darken the frame'
+PY
+
+# Errors: one sentence on stderr, exit 2, naming the file and line.
+expect2() {  # expect2 PATTERN ARGS...
+  local pattern=$1; shift
+  set +e; view "$@" > out.txt 2> err.txt; local rc=$?; set -e
+  [ $rc -eq 2 ] || { echo "expected exit 2, got $rc for: $*"; cat err.txt; exit 1; }
+  grep -v '^ssrlab-view: GL via' err.txt > err1.txt || true
+  [ "$(wc -l < err1.txt)" -eq 1 ] || { echo "expected one line on stderr for: $*"; cat err.txt; exit 1; }
+  grep -q "$pattern" err1.txt || { echo "stderr lacks '$pattern' for: $*"; cat err.txt; exit 1; }
+}
+printf 'frames 1\njump 3\n' > bad1.txt
+expect2 'bad1.txt:2: unknown command' --script bad1.txt
+printf 'frames 1\nsplit 2\n' > bad2.txt
+expect2 'bad2.txt:2:' --script bad2.txt
+printf 'frames 1\npreset-load missing.json\n' > bad3.txt
+expect2 'bad3.txt:2:.*missing.json' --script bad3.txt
+printf 'frames 1\nscene nosuch-scene\n' > bad4.txt
+expect2 'bad4.txt:2:.*nosuch-scene' --script bad4.txt
+echo '{"version": 1, "technique_a": {"name": "nosuch"}}' > bad.json
+expect2 'nosuch' --preset bad.json --frames 1
+echo '{ not json' > broken.json
+expect2 'broken.json' --preset broken.json --frames 1
+expect2 'nosuch' --technique nosuch --frames 1
+echo "viewer script ok"
