@@ -9,6 +9,8 @@
 #include "core/errors.h"
 #include "gl/program.h"
 #include "gl_test_env.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/technique.h"
 
 using namespace ssr;
 namespace fs = std::filesystem;
@@ -68,5 +70,32 @@ TEST(Program, EveryEmbeddedProgramCompiles) {
                         "techniques/ppr_project.comp", "techniques/ppr_resolve.comp"})
     EXPECT_NO_THROW(gl::Program::compute(embedded, p)) << p;
   EXPECT_NO_THROW(gl::Program::graphics(embedded, "render/gbuffer.vert", "render/gbuffer.frag"));
+  test::expect_no_gl_errors();
+}
+
+// F5 in the viewer: a shader broken while the program runs is reported with its file:line, and
+// the last good programs keep rendering the same frame.
+TEST(Program, FailedReloadKeepsTheLastGoodPrograms) {
+  const fs::path dir = fs::temp_directory_path() / ("ssrlab-reload-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(SSRLAB_SHADER_DIR, dir, fs::copy_options::recursive);
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, 64, 36, gl::ShaderSource(dir));
+  auto technique = create_technique("linear");
+  technique->load(r.shaders());
+  r.render(scene.cameras.front(), *technique, ViewMode::Final, nullptr);
+  const RgbaImage8 before = r.read_display();
+
+  std::ofstream(dir / "render/lighting.comp", std::ios::app) << "\nthis is not GLSL\n";
+  try {
+    r.reload_shaders();
+    ADD_FAILURE() << "expected the reload to fail";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("render/lighting.comp:"), std::string::npos) << e.what();
+  }
+  gl::take_gl_errors();  // the failed compile may be reported through KHR_debug too
+  r.render(scene.cameras.front(), *technique, ViewMode::Final, nullptr);
+  EXPECT_EQ(r.read_display().pixels, before.pixels);
+  fs::remove_all(dir);
   test::expect_no_gl_errors();
 }
