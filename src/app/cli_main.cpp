@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <regex>
 
 #include <CLI/CLI.hpp>
 
@@ -54,6 +55,40 @@ int list_techniques() {
   return 0;
 }
 
+// Bad input: one sentence on stderr (DESIGN §7), line breaks folded, one final full stop.
+int input_error(std::string msg) {
+  for (char& c : msg)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  while (!msg.empty() && (msg.back() == ' ' || msg.back() == '.')) msg.pop_back();
+  std::fprintf(stderr, "ssrlab: %s.\n", msg.c_str());
+  return 2;
+}
+
+// CLI11's messages, reworded where they are not a clear sentence.
+std::string parse_error_sentence(const CLI::App& app, int argc, char** argv,
+                                const CLI::ParseError& e) {
+  std::string known;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    known += (known.empty() ? "" : ", ") + sub->get_name();
+  if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty())
+    return "unknown subcommand '" + std::string(argv[1]) + "' (known: " + known + ")";
+  const std::string what = e.what();
+  std::smatch m;
+  static const std::regex conversion(R"(^Could not convert: (\S+) = (.*)$)");
+  static const std::regex extras(R"(^The following arguments? (?:was|were) not expected: (.*)$)");
+  static const std::regex missing(R"(^(\S+): \d+ required \S+ missing$)");
+  if (std::regex_match(what, m, conversion))
+    return "option " + m[1].str() + " cannot take the value '" + m[2].str() +
+           "' (wrong type, or out of range)";
+  if (std::regex_match(what, m, extras))
+    return "unknown option or unexpected argument '" + m[1].str() + "' (see ssrlab " +
+           (app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name() + " ") +
+           "--help)";
+  if (std::regex_match(what, m, missing)) return "option " + m[1].str() + " needs a value";
+  if (what == "A subcommand is required") return "a subcommand is required (one of " + known + ")";
+  return what;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -71,8 +106,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "ssrlab: %s\n", e.what());
-    return 2;
+    return input_error(parse_error_sentence(app, argc, argv, e));
   }
 
   try {
@@ -81,8 +115,7 @@ int main(int argc, char** argv) {
     if (scenes->parsed()) return list_scenes();
     if (techniques->parsed()) return list_techniques();
   } catch (const InputError& e) {
-    std::fprintf(stderr, "ssrlab: %s\n", e.what());
-    return 2;
+    return input_error(e.what());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ssrlab: %s\n", e.what());
     return 1;

@@ -48,11 +48,7 @@ std::pair<int, int> parse_named_size(const std::string& s) {
   return it != named.end() ? it->second : parse_size(s);
 }
 
-void require_dir(const std::string& file) {
-  if (file.empty()) return;
-  const fs::path dir = fs::absolute(file).parent_path();
-  if (!fs::is_directory(dir)) throw InputError("output directory '" + dir.string() + "' does not exist.");
-}
+constexpr std::size_t kMaxListed = 64;  // scenes, and sizes, per bench
 
 std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }
 
@@ -157,9 +153,7 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
 int run_bench(const BenchOptions& o) {
   if (o.json.empty() && o.csv.empty() && o.plot.empty())
     throw InputError("bench needs at least one of --json, --csv, --plot.");
-  require_dir(o.json);
-  require_dir(o.csv);
-  require_dir(o.plot);
+  require_output_files({{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}});
   if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot must name a .svg file.");
   if (o.frames < 1 || o.frames > 10000) throw InputError("--frames must be in [1, 10000].");
   if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
@@ -169,6 +163,11 @@ int run_bench(const BenchOptions& o) {
   if (!o.scenes.empty())
     for (const std::string& s : split_list(o.scenes, "scene")) scene_names.push_back(s);
   if (scene_names.empty()) scene_names.push_back("gallery");
+  // Every scene is loaded up front, and each size is a full run: bound both lists.
+  for (const auto& [what, n] : {std::pair{"sizes", sizes.size()}, {"scenes", scene_names.size()}})
+    if (n > kMaxListed)
+      throw InputError("bench was given " + std::to_string(n) + " " + what + ", more than the " +
+                       std::to_string(kMaxListed) + " supported.");
   std::vector<Scene> scenes;
   for (const std::string& s : scene_names) scenes.push_back(load_scene(s));
   std::vector<std::string> names;
@@ -182,7 +181,7 @@ int run_bench(const BenchOptions& o) {
   auto reference = create_technique("reference");
   apply_assignments(*reference, sets_for("reference", o.sets));
 
-  auto ctx = open_gl(o.gl);
+  auto ctx = open_gl(o.gl, sizes);
   const gl::ContextInfo& gi = ctx->info();
   const std::string clock = gi.software ? "cpu" : "gpu";
   const TimingOptions timing{o.warmup, o.frames, gi.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
@@ -219,6 +218,7 @@ int run_bench(const BenchOptions& o) {
       renderer->resize(1, 1);  // free the big targets before the next size
     }
   }
+  if (runs.empty()) throw RuntimeError("every scene and size was skipped; nothing was written.");
   const std::string revision = build_revision();
   if (!o.json.empty()) write_text_file_atomic(o.json, bench_json({gi.renderer, gi.version, clock}, revision, runs).dump(2) + "\n");
   if (!o.csv.empty()) write_text_file_atomic(o.csv, results_csv(runs));

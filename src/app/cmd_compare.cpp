@@ -35,11 +35,6 @@ struct CompareOptions {
   float exposure = 0.0f;
 };
 
-void require_dir(const std::string& file) {
-  const fs::path dir = fs::absolute(file).parent_path();
-  if (!fs::is_directory(dir)) throw InputError("output directory '" + dir.string() + "' does not exist.");
-}
-
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
@@ -49,8 +44,7 @@ std::string fmt(const char* f, double v) {
 int run_compare(const CompareOptions& o) {
   const auto [w, h] = parse_size(o.size);
   if (image_format_for(o.out) != ImageFormat::Png) throw InputError("the grid is written as a .png.");
-  require_dir(o.out);
-  if (!o.json.empty()) require_dir(o.json);
+  require_output_files({{"--out", o.out}, {"--json", o.json}});
   if (o.frames < 1 || o.frames > 1000) throw InputError("--frames must be in [1, 1000].");
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
@@ -65,7 +59,7 @@ int run_compare(const CompareOptions& o) {
   auto reference = create_technique("reference");
   apply_assignments(*reference, sets_for("reference", o.sets));
 
-  auto ctx = open_gl(o.gl);
+  auto ctx = open_gl(o.gl, {{w, h}});
   const std::string clock = ctx->info().software ? "cpu" : "gpu";
   Renderer renderer(scene, w, h);
   renderer.settings.exposure = o.exposure;

@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "eval/grid.h"
 #include "eval/metrics.h"
+#include "gl/gl.h"
 #include "reference/reference.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
@@ -21,8 +22,16 @@ namespace fs = std::filesystem;
 
 namespace ssr {
 
-std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path) {
+std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path,
+                                             const std::vector<std::pair<int, int>>& sizes) {
   auto ctx = gl::HeadlessContext::create(gl::parse_backend(path));
+  GLint max_side = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
+  for (const auto& [w, h] : sizes)
+    if (w > max_side || h > max_side)
+      throw InputError("size " + std::to_string(w) + "x" + std::to_string(h) +
+                       " is more than this GL supports (each side at most " +
+                       std::to_string(max_side) + ").");
   const auto& i = ctx->info();
   std::fprintf(stderr, "ssrlab: GL via %s: %s | %s\n", i.path.c_str(), i.renderer.c_str(),
                i.version.c_str());
@@ -49,13 +58,12 @@ int run_render(const RenderOptions& o) {
   // Validate every input before any GL work or file is touched.
   const auto [w, h] = parse_size(o.size);
   const ImageFormat format = image_format_for(o.out);
-  const fs::path out_dir = fs::absolute(o.out).parent_path();
-  if (!fs::is_directory(out_dir))
-    throw InputError("output directory '" + out_dir.string() + "' does not exist.");
+  require_output_files({{"--out", o.out}});
   // "classes" is the reference's own view: traceable / missing / sky per pixel.
   const bool classes_view = o.view == "classes";
   if (classes_view && o.technique != "reference")
     throw InputError("--view classes needs --technique reference.");
+  if (classes_view && format != ImageFormat::Png) throw InputError("--view classes writes a .png.");
   const ViewMode view = classes_view ? ViewMode::Final : parse_view_mode(o.view);
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
@@ -73,7 +81,7 @@ int run_render(const RenderOptions& o) {
   if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
     throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
 
-  auto ctx = open_gl(o.gl);
+  auto ctx = open_gl(o.gl, {{w, h}});
   gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   Renderer renderer(scene, w, h, shaders);
   renderer.settings.exposure = o.exposure;
@@ -88,7 +96,6 @@ int run_render(const RenderOptions& o) {
   const std::size_t bad = count_nonfinite(renderer.read_texture(renderer.reflection()).pixels) +
                           count_nonfinite(renderer.read_texture(renderer.color()).pixels);
   if (classes_view) {
-    if (format != ImageFormat::Png) throw InputError("--view classes writes a .png.");
     write_png(o.out, class_map(*reference_outputs(*technique).classes, w, h));
   } else if (format == ImageFormat::Png) {
     write_png(o.out, renderer.read_display());

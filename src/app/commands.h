@@ -12,8 +12,10 @@ namespace CLI { class App; }
 
 namespace ssr {
 
-// Opens the headless context and logs the path taken and GL_RENDERER on stderr.
-std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path);
+// Opens the headless context, checks every frame size against the GL's limit (InputError), then
+// logs the path taken and GL_RENDERER on stderr: bad input still gets exactly one line there.
+std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path,
+                                             const std::vector<std::pair<int, int>>& sizes);
 
 // Registers the subcommand on `app`; the returned function runs it after parsing.
 struct Command {

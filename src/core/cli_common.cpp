@@ -1,5 +1,6 @@
 #include "core/cli_common.h"
 
+#include <filesystem>
 #include <regex>
 
 #include "core/errors.h"
@@ -13,7 +14,30 @@ std::pair<int, int> parse_size(const std::string& text) {
     throw InputError("size '" + text + "' is not of the form WIDTHxHEIGHT (e.g. 1280x720).");
   const int w = std::stoi(m[1]), h = std::stoi(m[2]);
   if (w < 1 || h < 1) throw InputError("size '" + text + "' must be at least 1x1.");
+  if (static_cast<long long>(w) * h > kMaxFramePixels)
+    throw InputError("size '" + text + "' has " + std::to_string(static_cast<long long>(w) * h) +
+                     " pixels, more than the " + std::to_string(kMaxFramePixels) +
+                     " (8192x8192) supported.");
   return {w, h};
+}
+
+void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<std::string, fs::path>> seen;
+  for (const auto& [option, file] : option_and_path) {
+    if (file.empty()) continue;
+    const fs::path path = fs::absolute(file).lexically_normal();
+    std::error_code ec;
+    if (!fs::is_directory(path.parent_path(), ec))
+      throw InputError("output directory '" + path.parent_path().string() + "' of " + option +
+                       " does not exist.");
+    if (fs::is_directory(path, ec))
+      throw InputError(option + " '" + file + "' is a directory, not a file.");
+    for (const auto& [other, p] : seen)
+      if (p == path || fs::equivalent(p, path, ec))
+        throw InputError(option + " and " + other + " name the same file '" + file + "'.");
+    seen.emplace_back(option, path);
+  }
 }
 
 void apply_assignments(Technique& technique, const std::vector<std::string>& assignments) {

@@ -1,5 +1,6 @@
 #include "core/variants.h"
 
+#include <algorithm>
 #include <set>
 
 #include "core/cli_common.h"
@@ -73,6 +74,18 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
     sweep_of[technique_of(key)].push_back({key, split_list(values, "sweep")});
   }
 
+  // Count before building: sweeps multiply, and a few long lists would exhaust memory.
+  constexpr std::size_t kMaxVariants = 10000;
+  std::size_t count = preset_names.size();
+  for (const std::string& t : techniques) {
+    std::size_t n = 1;
+    for (const auto& sweep : sweep_of[t])
+      n = std::min(n * sweep.second.size(), kMaxVariants + 1);
+    count += n;
+  }
+  if (count > kMaxVariants)
+    throw InputError("the techniques, sweeps and presets give more than " +
+                     std::to_string(kMaxVariants) + " variants, more than supported.");
   std::vector<Variant> out;
   for (const std::string& t : techniques) {
     std::vector<Variant> vs = {{t, "", sets_for(t, sets), {}}};

@@ -56,6 +56,7 @@ class PreparsedMaterials : public tinyobj::MaterialReader {
 
 struct ObjScan {
   std::size_t nv = 0, nvt = 0, nvn = 0, triangles = 0, faces = 0;
+  std::size_t meshes = 0;  // at most this many: runs of faces between o, g and usemtl lines
   std::vector<std::pair<std::string, std::size_t>> mtllibs;  // file name, line
 };
 
@@ -67,6 +68,7 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
     long long index = 0;
     std::size_t line = 0;
   } max_v, max_vt, max_vn;
+  bool run_open = false;  // faces seen since the last o, g or usemtl line
   std::vector<std::string_view> tok;
   for_each_line(text, [&](std::size_t line_no, std::string_view line) {
     tokenize(line, tok);
@@ -133,7 +135,7 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
           if (k == 1 && parts[k].empty() && nparts == 3) continue;  // i//k
           const auto idx = parse_int(parts[k]);
           if (!idx)
-            fail(where() + std::string(what) + " has a malformed " + kinds[k].name + " index " +
+            fail(where() + std::string(what) + " has a malformed or out-of-range " + kinds[k].name + " index " +
                  q(parts[k]) + (parts[k] == tok[i] ? std::string() : " in " + q(tok[i])));
           if (*idx == 0)
             fail(where() + std::string(what) + " has " + kinds[k].name +
@@ -148,11 +150,14 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
       }
       if (key == "f") {
         ++s.faces;
+        if (!run_open) ++s.meshes, run_open = true;
         s.triangles += n - 2;
         if (s.triangles > kMaxTriangles)
           fail("OBJ file " + q(path) + " has more than " + std::to_string(kMaxTriangles) +
                " triangles, more than supported");
       }
+    } else if (key == "o" || key == "g" || key == "usemtl") {
+      run_open = false;
     } else if (key == "mtllib") {
       // Names separated by spaces; "\ " is a space inside a name (as in tinyobjloader).
       std::string_view rest = line.substr(static_cast<std::size_t>(key.data() - line.data()) + 6);
@@ -258,6 +263,9 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     fail("OBJ file " + q(path) + " is empty");
   const ObjScan scan = scan_obj(path, text);
   if (scan.faces == 0) fail("OBJ file " + q(path) + " has no faces");
+  if (scene.meshes.size() + scan.meshes > static_cast<std::size_t>(Scene::kMaxMeshes))
+    fail("OBJ file " + q(path) + " brings the scene to more than " +
+         std::to_string(Scene::kMaxMeshes) + " meshes (groups of faces), more than supported");
   if (ctx.triangles + scan.triangles > kMaxTriangles)
     fail("OBJ file " + q(path) + " brings the scene above " + std::to_string(kMaxTriangles) +
          " triangles, more than supported");
@@ -321,9 +329,11 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
 
   // Materials used by this file, created on first use.
   std::vector<int> scene_material(mtl.size(), -1);
+  int fallback = -1;  // default_material() searches by name: once per file, not once per face
   auto resolve_material = [&](int id) {
     if (material_override >= 0) return material_override;
-    if (id < 0 || id >= static_cast<int>(mtl.size())) return default_material(scene);
+    if (id < 0 || id >= static_cast<int>(mtl.size()))
+      return fallback >= 0 ? fallback : (fallback = default_material(scene));
     int& m = scene_material[static_cast<std::size_t>(id)];
     if (m < 0) m = add_mtl_material(scene, ctx, mtl[static_cast<std::size_t>(id)], root);
     return m;
@@ -344,6 +354,9 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
       std::unordered_map<CornerKey, std::uint32_t, CornerHash> corners;
     };
     std::vector<Builder> builders;
+    // material -> builders index: searching `builders` for every face was quadratic in the
+    // number of materials (found while fuzzing).
+    std::unordered_map<int, std::size_t> builder_of;
     for (std::size_t f = 0; f < nfaces; ++f) {
       if (sm.num_face_vertices[f] != 3)
         fail("OBJ file " + q(path) + ": face " + std::to_string(f + 1) + " of shape " +
@@ -369,12 +382,9 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
       const glm::vec3 face_normal(cr / area2);
 
       const int material = resolve_material(sm.material_ids[f]);
-      auto b = std::find_if(builders.begin(), builders.end(),
-                            [&](const Builder& x) { return x.material == material; });
-      if (b == builders.end()) {
-        builders.push_back(Builder{material, Mesh{}, {}});
-        b = builders.end() - 1;
-      }
+      const auto [slot, is_new] = builder_of.try_emplace(material, builders.size());
+      if (is_new) builders.push_back(Builder{material, Mesh{}, {}});
+      Builder* const b = &builders[slot->second];
       for (const tinyobj::index_t& ix : c) {
         const bool has_normal =
             ix.normal_index >= 0 && wnrm_ok[static_cast<std::size_t>(ix.normal_index)];

@@ -65,6 +65,9 @@ void validate(const Scene& s) {
   if (s.meshes.empty()) fail(s, "has no meshes");
   if (s.materials.empty()) fail(s, "has no materials");
   if (s.cameras.empty()) fail(s, "has no camera");
+  if (s.meshes.size() > static_cast<std::size_t>(Scene::kMaxMeshes))
+    fail(s, "has " + std::to_string(s.meshes.size()) + " meshes, more than the " +
+                std::to_string(Scene::kMaxMeshes) + " supported");
   if (s.reflectors.size() > static_cast<std::size_t>(Scene::kMaxReflectors))
     fail(s, "has " + std::to_string(s.reflectors.size()) + " reflectors, more than the " +
                 std::to_string(Scene::kMaxReflectors) + " supported");

@@ -102,6 +102,9 @@ struct Scene {
 
   static constexpr int kMaxReflectors = 16;
   static constexpr int kMaxLights = 32;
+  // One draw (and its uniform buffer) per mesh: a file of one-triangle groups must not turn
+  // into millions of them.
+  static constexpr int kMaxMeshes = 65536;
 
   // The camera of that name; throws InputError listing the names when there is none.
   const Camera& camera(const std::string& name) const;

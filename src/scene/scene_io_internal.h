@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -107,7 +109,15 @@ inline std::optional<float> parse_float(std::string_view s) {
   if (s.size() > 1 && s[0] == '+' && s[1] != '-') s.remove_prefix(1);
   float v = 0.0f;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+  if (r.ec == std::errc::result_out_of_range && r.ptr == s.data() + s.size()) {
+    // Underflow (1e-50) reads as 0 or a denormal, as in other OBJ readers; overflow (1e39)
+    // stays refused. strtod's decimal point is LC_NUMERIC's, which nothing here changes.
+    const double d = std::strtod(std::string(s).c_str(), nullptr);
+    if (!(std::abs(d) <= std::numeric_limits<float>::max())) return std::nullopt;
+    v = static_cast<float>(d);
+  } else if (r.ec != std::errc() || r.ptr != s.data() + s.size())
+    return std::nullopt;
+  if (!std::isfinite(v)) return std::nullopt;
   return v;
 }
 

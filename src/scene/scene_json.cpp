@@ -40,6 +40,7 @@
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -184,25 +185,49 @@ class JsonReader {
   std::string label_;  // starts every message
 };
 
+// Finds the first duplicate key (nlohmann keeps the last one silently) in a SAX pass of its own:
+// nlohmann 3.11.2's parse() with a callback rescans the enclosing array after every object,
+// quadratic in the array's length (a 3 MB file of boxes ran for over 10 minutes; found while
+// fuzzing).
+struct DuplicateKeyFinder : nlohmann::json_sax<json> {
+  std::vector<std::set<std::string>> seen;  // the keys of each open object
+  std::string duplicate;
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override {
+    seen.emplace_back();
+    return true;
+  }
+  bool key(string_t& k) override {
+    if (!seen.back().insert(k).second) duplicate = k;
+    return duplicate.empty();  // stops at the first one
+  }
+  bool end_object() override {
+    seen.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+};
+
 json parse_json_text(const std::string& text, const std::string& label) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail(label + " is empty");
-  // Duplicate keys are an error (nlohmann keeps the last one silently).
-  std::vector<std::set<std::string>> seen;
-  std::string duplicate;
-  auto callback = [&](int, json::parse_event_t event, json& parsed) {
-    if (event == json::parse_event_t::object_start) {
-      seen.emplace_back();
-    } else if (event == json::parse_event_t::object_end) {
-      if (!seen.empty()) seen.pop_back();
-    } else if (event == json::parse_event_t::key && !seen.empty()) {
-      const std::string k = parsed.get<std::string>();
-      if (!seen.back().insert(k).second && duplicate.empty()) duplicate = k;
-    }
-    return true;
-  };
   json j;
+  std::string duplicate;
   try {
-    j = json::parse(text, callback, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    j = json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    DuplicateKeyFinder finder;  // only after a successful parse: no errors left to report
+    json::sax_parse(text, &finder, json::input_format_t::json, /*strict=*/true,
+                    /*ignore_comments=*/true);
+    duplicate = finder.duplicate;
   } catch (const json::parse_error& e) {
     const std::string what = e.what();
     static const std::regex re(R"(at line (\d+), column (\d+): (.*)$)");
@@ -327,10 +352,27 @@ void read_materials(const JsonReader& r, const json& j, Scene& s, LoadContext& c
   }
 }
 
-int find_material(const JsonReader& r, const Scene& s, const json& obj, const std::string& where) {
+// Material name -> index of the first material of that name, extended as materials are appended
+// (OBJ files add theirs): a linear search per mesh and primitive was quadratic (found while
+// fuzzing: 20000 materials and primitives, 1.4 MB, took half a minute).
+class MaterialNames {
+ public:
+  int find(const Scene& s, const std::string& name) {
+    for (; indexed_ < s.materials.size(); ++indexed_)
+      first_.try_emplace(s.materials[indexed_].name, static_cast<int>(indexed_));
+    const auto it = first_.find(name);
+    return it == first_.end() ? -1 : it->second;
+  }
+
+ private:
+  std::map<std::string, int> first_;
+  std::size_t indexed_ = 0;
+};
+
+int find_material(const JsonReader& r, const Scene& s, MaterialNames& names, const json& obj,
+                  const std::string& where) {
   const std::string name = r.string(obj["material"], JsonReader::join(where, "material"));
-  for (std::size_t i = 0; i < s.materials.size(); ++i)
-    if (s.materials[i].name == name) return static_cast<int>(i);
+  if (const int i = names.find(s, name); i >= 0) return i;
   std::string list;
   for (const Material& m : s.materials) list += (list.empty() ? "" : ", ") + m.name;
   r.fail_at(JsonReader::join(where, "material"),
@@ -339,7 +381,7 @@ int find_material(const JsonReader& r, const Scene& s, const json& obj, const st
 }
 
 void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
-                 const fs::path& dir) {
+                 MaterialNames& names, const fs::path& dir) {
   r.array(j, "meshes");
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string where = JsonReader::index("meshes", i);
@@ -350,8 +392,10 @@ void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
     const std::string context = "scene file " + q(r.file()) + ": " + q(where + ".obj") + ": ";
     const fs::path obj = resolve_inside(dir, dir, rel, context, "OBJ");
     std::error_code ec;
-    if (!fs::is_regular_file(obj, ec)) fail(context + "OBJ file " + q(obj) + " does not exist");
-    const int material = m.contains("material") ? find_material(r, s, m, where) : -1;
+    if (!fs::is_regular_file(obj, ec))
+      fail(context + "OBJ file " + q(obj) +
+           (fs::exists(obj, ec) ? " is not a regular file" : " does not exist"));
+    const int material = m.contains("material") ? find_material(r, s, names, m, where) : -1;
     const glm::mat4 transform = read_transform(r, m, where);
     int reflector = 0;
     if (m.contains("reflector")) {
@@ -371,8 +415,9 @@ void read_meshes(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
   }
 }
 
-void read_primitives(const JsonReader& r, const json& j, Scene& s) {
+void read_primitives(const JsonReader& r, const json& j, Scene& s, MaterialNames& names) {
   r.array(j, "primitives");
+  std::size_t triangles = s.triangle_count();  // the OBJ meshes'
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string where = JsonReader::index("primitives", i);
     const json& p = r.object(j[i], where);
@@ -409,10 +454,21 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s) {
       r.fail_at(where + ".type",
                 "must be \"plane\", \"box\", \"sphere\" or \"cylinder\", not " + q(type));
     }
+    // Counted as each one is made: a 50-byte sphere can be 2M triangles, and checking only
+    // after the last one let a 2 KB file allocate gigabytes first (found while fuzzing).
+    triangles += mesh.indices.size() / 3;
+    if (triangles > kMaxTriangles)
+      r.fail_at(where, "brings the scene above " + std::to_string(kMaxTriangles) +
+                           " triangles, more than supported");
     const glm::mat4 transform = read_transform(r, p, where);
     meshgen::transform(mesh, transform);
     mesh.name = r.string(p, where, "name", type + std::to_string(i));
-    mesh.material = p.contains("material") ? find_material(r, s, p, where) : default_material(s);
+    if (p.contains("material")) {
+      mesh.material = find_material(r, s, names, p, where);
+    } else {
+      const int d = names.find(s, "default");
+      mesh.material = d >= 0 ? d : default_material(s);
+    }
     if (p.contains("reflector")) {
       const std::string w = where + ".reflector";
       const json& rj = p["reflector"];
@@ -519,8 +575,9 @@ Scene load_scene_json(const fs::path& path) {
   s.ambient = r.number(j, "", "ambient", s.ambient, 0.0f, 1e6f);
   if (j.contains("environment")) read_environment(r, j["environment"], s.environment);
   if (j.contains("materials")) read_materials(r, j["materials"], s, ctx, dir);
-  if (j.contains("meshes")) read_meshes(r, j["meshes"], s, ctx, dir);
-  if (j.contains("primitives")) read_primitives(r, j["primitives"], s);
+  MaterialNames names;
+  if (j.contains("meshes")) read_meshes(r, j["meshes"], s, ctx, names, dir);
+  if (j.contains("primitives")) read_primitives(r, j["primitives"], s, names);
   if (s.meshes.empty()) fail("scene file " + q(path) + " has no meshes or primitives");
   if (s.triangle_count() > kMaxTriangles)
     fail("scene file " + q(path) + " has more than " + std::to_string(kMaxTriangles) +
