@@ -4,7 +4,15 @@ JOBS  ?= $(shell nproc)
 SSRLAB = $(BUILD)/ssrlab
 DEMO_OUT ?= out/demo
 
-.PHONY: all deps configure build demo test bench clean test-asan
+# Scene-loader fuzzing (tests/fuzz, clang-14 + libFuzzer): FUZZ_SANITIZERS= (empty) or
+# undefined builds a faster binary than the default ASan + UBSan one.
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SANITIZERS ?= address,undefined
+FUZZ_SECONDS ?= 25
+FUZZ_RUNS ?= 10000000
+FUZZ_WORKERS ?= 2
+
+.PHONY: all deps configure build demo test bench clean test-asan fuzz-build fuzz-smoke fuzz
 
 all: build
 
@@ -30,6 +38,7 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+	$(MAKE) --no-print-directory fuzz-smoke
 
 # AddressSanitizer + UBSan. Leak checking stays off: Mesa's llvmpipe driver leaks a few hundred
 # bytes it allocated before being unloaded (the unit tests alone pass with it on).
@@ -38,5 +47,18 @@ test-asan: deps
 	cd build-asan && ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=halt_on_error=1 \
 	  ctest --output-on-failure -j$(JOBS) --timeout 1200
 
+# libFuzzer targets of the OBJ/MTL and JSON scene loaders (docs/ROBUSTNESS.md, "Fuzzing").
+# fuzz-smoke: each target FUZZ_SECONDS (CI, after ctest); fuzz: each target FUZZ_RUNS executions
+# in FUZZ_WORKERS processes. Either fails on any finding (reproducer in $(FUZZ_BUILD)/artifacts).
+fuzz-build: deps
+	cmake --preset fuzz -B $(FUZZ_BUILD) -DSSRLAB_FUZZ_SANITIZERS=$(FUZZ_SANITIZERS)
+	cmake --build $(FUZZ_BUILD) -j$(JOBS)
+
+fuzz-smoke: fuzz-build
+	FUZZ_BUILD=$(FUZZ_BUILD) scripts/fuzz.sh smoke $(FUZZ_SECONDS)
+
+fuzz: fuzz-build
+	FUZZ_BUILD=$(FUZZ_BUILD) scripts/fuzz.sh long $(FUZZ_RUNS) $(FUZZ_WORKERS)
+
 clean:
-	rm -rf $(BUILD) build-debug build-asan out
+	rm -rf $(BUILD) build-debug build-asan build-fuzz out

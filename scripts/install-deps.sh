@@ -8,6 +8,7 @@ pkgs=(
   libglfw3-dev libimgui-dev         # viewer
   libglm-dev libembree-dev libtinyobjloader-dev libstb-dev libtinyexr-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev                      # tests
+  clang-14 libclang-rt-14-dev       # fuzz targets (tests/fuzz): libclang_rt.fuzzer, asan, ubsan
   xvfb xauth                        # viewer test in a real X window
 )
 missing=()

@@ -349,6 +349,9 @@ INSTANTIATE_TEST_SUITE_P(
     Json, MalformedJson,
     testing::Values(
         BadFile{"json/bad_syntax.json", {"bad_syntax.json", "line 3", "column", "syntax error"}},
+        // Found by fuzzing: nlohmann throws out_of_range, not parse_error, for this.
+        BadFile{"json/bad_number_overflow.json",
+                {"bad_number_overflow.json", "number overflow", "1e400"}},
         BadFile{"json/bad_unclosed.json", {"bad_unclosed.json", "line 5", "syntax error"}},
         BadFile{"json/empty.json", {"empty.json", "is empty"}},
         BadFile{"json/bad_not_object.json", {"bad_not_object.json", "object"}},
@@ -387,6 +390,77 @@ INSTANTIATE_TEST_SUITE_P(
       name = name.substr(0, name.find('.'));
       return name;
     });
+
+// ---- found by fuzzing (tests/fuzz, docs/ROBUSTNESS.md) --------------------------------------
+// Quadratic work in big (valid-looking) files. The old code took minutes at these sizes; the
+// time bounds are generous (about 10x what they take now on 2 busy cores) so that they only
+// catch a return of the quadratic behaviour.
+
+std::filesystem::path fuzz_file(const std::string& name, const std::string& text) {
+  const auto dir = std::filesystem::path(testing::TempDir()) / "ssrlab_fuzz_regressions";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / name, std::ios::binary) << text;
+  return dir / name;
+}
+
+// Inputs that the fuzzers found slow (quadratic code, since made linear). They must still load
+// correctly; there is no timing assert (timings belong in `ssrlab bench`): a regression to
+// quadratic time shows as the suite's timeout.
+TEST(FuzzRegressions, LongJsonArraysParseQuickly) {
+  // nlohmann's parse() with a callback (used to catch duplicate keys) rescanned the enclosing
+  // array after every object.
+  std::string text = "{\"primitives\": [{}";
+  for (int i = 1; i < 200000; ++i) text += ",{}";
+  text += "]}";
+  const auto path = fuzz_file("long_array.json", text);
+  expect_message(input_error([&] { ssr::load_scene_json(path); }),
+                 {"long_array.json", "'primitives[0].type'", "required"});
+  // Duplicate keys are still found, at any depth.
+  const auto dup = fuzz_file("nested_duplicate.json",
+                             R"({"materials": {"a": {"albedo": [1, 1, 1], "albedo": [0, 0, 0]}}})");
+  expect_message(input_error([&] { ssr::load_scene_json(dup); }), {"'albedo' twice"});
+}
+
+TEST(FuzzRegressions, ManyObjMaterialsLoadQuickly) {
+  // parse_mtl compared every newmtl with all earlier materials; append_obj searched its mesh
+  // builders, and the scene's materials for "default", once per face.
+  constexpr int n = 20000;
+  std::string mtl, obj = "mtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int i = 0; i < n; ++i) {
+    mtl += "newmtl m" + std::to_string(i) + "\n";
+    obj += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
+  }
+  obj += "usemtl none\n";
+  for (int i = 0; i < 20 * n; ++i) obj += "f 1 2 3\n";
+  fuzz_file("many.mtl", mtl);
+  const auto path = fuzz_file("many.obj", obj);
+  Scene s;
+  s = ssr::load_scene_obj(path);
+  EXPECT_EQ(s.materials.size(), std::size_t{n} + 1);  // and "default"
+  EXPECT_EQ(s.meshes.size(), std::size_t{n} + 1);
+  // The name index still finds a duplicate and names the first definition.
+  fuzz_file("many.mtl", mtl + "newmtl m7\n");
+  expect_message(input_error([&] { ssr::load_scene_obj(path); }),
+                 {"many.mtl", "line 20001", "'m7'", "defined twice", "line 8"});
+}
+
+TEST(FuzzRegressions, ManyJsonMaterialsAndPrimitivesLoadQuickly) {
+  // find_material and the primitives' default material were linear searches per primitive.
+  constexpr int materials = 100000, primitives = 20000;
+  std::string text = "{\"materials\": {";
+  for (int i = 0; i < materials; ++i) text += (i ? ", \"m" : "\"m") + std::to_string(i) + "\": {}";
+  text += "}, \"primitives\": [";
+  for (int i = 0; i < 2 * primitives; ++i)
+    text += std::string(i ? ", " : "") + R"({"type": "plane", "size": [1, 1])" +
+            (i % 2 ? "}" : R"(, "material": "m99999"})");
+  text += "]}";
+  const auto path = fuzz_file("many_materials.json", text);
+  Scene s;
+  s = ssr::load_scene_json(path);
+  ASSERT_EQ(s.meshes.size(), std::size_t{2 * primitives});
+  EXPECT_EQ(s.materials[static_cast<std::size_t>(s.meshes[0].material)].name, "m99999");
+  EXPECT_EQ(s.materials[static_cast<std::size_t>(s.meshes[1].material)].name, "default");
+}
 
 // ---- load_scene dispatch and the example scene -------------------------------------------------
 
