@@ -392,9 +392,6 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // ---- found by fuzzing (tests/fuzz, docs/ROBUSTNESS.md) --------------------------------------
-// Quadratic work in big (valid-looking) files. The old code took minutes at these sizes; the
-// time bounds are generous (about 10x what they take now on 2 busy cores) so that they only
-// catch a return of the quadratic behaviour.
 
 std::filesystem::path fuzz_file(const std::string& name, const std::string& text) {
   const auto dir = std::filesystem::path(testing::TempDir()) / "ssrlab_fuzz_regressions";
@@ -403,9 +400,10 @@ std::filesystem::path fuzz_file(const std::string& name, const std::string& text
   return dir / name;
 }
 
-// Inputs that the fuzzers found slow (quadratic code, since made linear). They must still load
-// correctly; there is no timing assert (timings belong in `ssrlab bench`): a regression to
-// quadratic time shows as the suite's timeout.
+// Inputs that the fuzzers found slow: quadratic work in big, valid-looking files (the old code
+// took minutes at these sizes), since made linear. They must still load correctly; there is no
+// timing assert (timings belong in `ssrlab bench`): a return to quadratic time shows as the
+// suite's timeout.
 TEST(FuzzRegressions, LongJsonArraysParseQuickly) {
   // nlohmann's parse() with a callback (used to catch duplicate keys) rescanned the enclosing
   // array after every object.
