@@ -54,6 +54,17 @@ class PreparsedMaterials : public tinyobj::MaterialReader {
   bool done_ = false;
 };
 
+// tinyobjloader rc10 reads a number's exponent into an int and overflows it (undefined
+// behaviour) on 10-digit exponents such as "0e2147483648" (found by fuzzing). Such numbers can
+// only spell 0 ("0e...", "1e-...") or be refused as overflowing, so they are refused here.
+bool exponent_too_long(std::string_view s) {
+  std::size_t i = s.find_first_of("eE");
+  if (i == std::string_view::npos) return false;
+  if (++i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+  while (i < s.size() && s[i] == '0') ++i;  // leading zeros do not grow tinyobjloader's int
+  return s.size() - i > 9;
+}
+
 struct ObjScan {
   std::size_t nv = 0, nvt = 0, nvn = 0, triangles = 0, faces = 0;
   std::size_t meshes = 0;  // at most this many: runs of faces between o, g and usemtl lines
@@ -78,7 +89,7 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
     auto numbers = [&](std::size_t min_n, std::size_t max_n, const char* what) {
       std::size_t n = 0;
       for (std::size_t i = 1; i < tok.size() && tok[i][0] != '#'; ++i, ++n)
-        if (!parse_float(tok[i]))
+        if (!parse_float(tok[i]) || exponent_too_long(tok[i]))
           fail(where() + what + " has a malformed or non-finite number " + q(tok[i]));
       if (n < min_n || n > max_n)
         fail(where() + what + " needs " + std::to_string(min_n) +

@@ -234,6 +234,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"obj/bad_nan_vertex.obj", {"bad_nan_vertex.obj", "line 2", "'nan'"}},
         BadFile{"obj/bad_huge_vertex.obj", {"bad_huge_vertex.obj", "line 3", "'1e39'"}},
         BadFile{"obj/bad_garbage_number.obj", {"bad_garbage_number.obj", "line 2", "'abc'"}},
+        // Found by fuzzing: tinyobjloader's int exponent overflowed (undefined behaviour).
+        BadFile{"obj/bad_exponent_overflow.obj",
+                {"bad_exponent_overflow.obj", "line 2", "'0e2147483648'"}},
         BadFile{"obj/bad_garbage_index.obj", {"bad_garbage_index.obj", "line 4", "'2x'"}},
         BadFile{"obj/bad_face_two_vertices.obj",
                 {"bad_face_two_vertices.obj", "line 3", "at least 3"}},
