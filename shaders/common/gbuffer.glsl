@@ -16,6 +16,7 @@ struct GSample {
   float reflectance;
   uint reflector;    // 0 = none
   uint flags;        // MATERIAL_FLAG_*
+  uint object;       // mesh index (Scene::meshes)
 };
 
 bool is_background(float depth) { return depth <= 0.0; }
@@ -36,6 +37,7 @@ GSample gbuffer_fetch(ivec2 p) {
   g.reflector = m.x;
   g.reflectance = float(m.y) / 255.0;
   g.flags = m.z;
+  g.object = m.w;
   return g;
 }
 

@@ -1,4 +1,5 @@
-// G-buffer fill: view-space normal + roughness, albedo + metallic, material ids and flags.
+// G-buffer fill: view-space normal + roughness, albedo + metallic, material ids, flags and the
+// object (mesh) id.
 #include "common/frame.glsl"
 #include "common/brdf.glsl"
 
@@ -42,8 +43,10 @@ void main() {
   if (draw.ids.x > 0 || max(f0.r, max(f0.g, f0.b)) >= frame.settings.z)
     flags |= MATERIAL_FLAG_REFLECTIVE;
   if (draw.ids.w != 0) flags |= MATERIAL_FLAG_TRANSPARENT;
+  if (draw.ids.z != 0) flags |= MATERIAL_FLAG_NORMAL_MAPPED;
   out_emission = vec4(draw.emission.rgb, 0.0);
   out_normal_roughness = vec4(n, draw.material.x);
   out_albedo_metallic = vec4(albedo, metallic);
-  out_material = uvec4(uint(draw.ids.x), uint(round(clamp(reflectance, 0.0, 1.0) * 255.0)), flags, 0u);
+  out_material = uvec4(uint(draw.ids.x), uint(round(clamp(reflectance, 0.0, 1.0) * 255.0)), flags,
+                      uint(draw.object.x));
 }

@@ -14,7 +14,7 @@
 #define TEX_DEPTH 0             // D32F reversed-Z
 #define TEX_NORMAL_ROUGHNESS 1  // RGBA16F view-space normal, perceptual roughness
 #define TEX_ALBEDO_METALLIC 2   // RGBA8 linear albedo, metallic
-#define TEX_MATERIAL 3          // RGBA8UI reflector id, reflectance*255, flags
+#define TEX_MATERIAL 3          // RGBA16UI reflector id, reflectance*255, flags, object (mesh) id
 #define TEX_LIT 4               // RGBA16F lit colour (no reflections)
 #define TEX_REFLECTION 5        // RGBA16F technique output
 #define TEX_COLOR 6             // RGBA16F composited HDR colour
@@ -37,3 +37,4 @@
 // G-buffer material flags (TEX_MATERIAL.z)
 #define MATERIAL_FLAG_REFLECTIVE 1u
 #define MATERIAL_FLAG_TRANSPARENT 2u
+#define MATERIAL_FLAG_NORMAL_MAPPED 4u

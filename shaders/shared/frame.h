@@ -27,6 +27,7 @@ struct DrawUniforms {
   vec4 material;          // roughness, reflectance, normal strength, ior
   vec4 emission;          // linear rgb, w unused
   ivec4 ids;              // x reflector id, y has albedo map, z has normal map, w transparent
+  ivec4 object;           // x mesh index (the G-buffer's object id), yzw unused
 };
 
 struct GpuLight {

@@ -81,14 +81,14 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
 
   // --- read the G-buffer back (GL convention: row 0 at the bottom) --------------------------
   std::vector<float> depth(npx), normal_rough(npx * 4);
-  std::vector<std::uint8_t> material(npx * 4);
+  std::vector<std::uint16_t> material(npx * 4);  // reflector id, reflectance, flags, object id
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glGetTextureImage(in.gbuffer.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                     static_cast<GLsizei>(npx * sizeof(float)), depth.data());
   glGetTextureImage(in.gbuffer.normal_roughness.id(), 0, GL_RGBA, GL_FLOAT,
                     static_cast<GLsizei>(npx * 4 * sizeof(float)), normal_rough.data());
-  glGetTextureImage(in.gbuffer.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(npx * 4), material.data());
+  glGetTextureImage(in.gbuffer.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT,
+                    static_cast<GLsizei>(npx * 4 * sizeof(std::uint16_t)), material.data());
 
   const CameraMatrices& m = in.renderer.matrices();
   const glm::dmat4 inv_proj = glm::inverse(glm::dmat4(m.proj));
@@ -189,7 +189,11 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           const double footprint = width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
                                    static_cast<double>(hit.uv_density);
           s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
-          // Traceable: the hit projects on screen and the depth buffer there is that surface.
+          // Traceable: the hit projects on screen, and the pixel there shows the same object at
+          // the hit's depth. Depth alone is not enough: where an object stands on a mirror, the
+          // floor in front of its base is within the tolerance of the base's depth, and the
+          // screen-space ideal would read the floor. The pixel's own reflector is never its
+          // own reflection.
           const glm::dvec4 clip = view_proj * glm::dvec4(glm::dvec3(hit.position), 1.0);
           bool visible = false;
           glm::vec2 hp(0);
@@ -200,7 +204,11 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
               const int hy = std::min(static_cast<int>(uv.y * h), h - 1);
               const double z_hit = (view * glm::dvec4(glm::dvec3(hit.position), 1.0)).z;
               const double z_buf = view_z_at(hx, hy);
-              visible = std::abs(z_buf - z_hit) <= params_.depth_tolerance * std::abs(z_hit) + 1e-4;
+              const std::size_t j = static_cast<std::size_t>(hy) * w + hx;
+              const bool same_object = depth[j] > 0.0f && material[j * 4 + 3] == hit.mesh;
+              const bool own_reflector = material[i * 4] > 0 && hit.mesh == material[i * 4 + 3];
+              visible = same_object && !own_reflector &&
+                        std::abs(z_buf - z_hit) <= params_.depth_tolerance * std::abs(z_hit) + 1e-4;
               hp = glm::vec2(hx, hy);
             }
           }

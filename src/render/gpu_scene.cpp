@@ -47,6 +47,7 @@ GpuScene::GpuScene(const Scene& scene) : vao_("scene vao") {
     u.emission = glm::vec4(mat.emission, 0.0f);
     u.ids = glm::ivec4(m.reflector, mat.albedo_texture >= 0, mat.normal_texture >= 0,
                        mat.transparent ? 1 : 0);
+    u.object = glm::ivec4(static_cast<int>(draws_.size()), 0, 0, 0);
     d.ubo = gl::make_buffer("draw " + m.name, sizeof u, &u, 0);
     d.transparent = mat.transparent;
     has_transparent_ |= mat.transparent;

@@ -15,7 +15,7 @@ const std::vector<std::string>& view_mode_names() {
   static const std::vector<std::string> names = {"final", "reflection", "confidence", "lit",
                                                  "normal", "depth", "albedo", "roughness",
                                                  "metallic", "mask", "steps", "hits", "distance",
-                                                 "offsets", "holes"};
+                                                 "offsets", "holes", "reflected"};
   return names;
 }
 
@@ -82,7 +82,8 @@ void Renderer::resize(int width, int height) {
   gbuffer_.depth = gl::Texture2D("gbuffer depth", GL_DEPTH_COMPONENT32F, width, height);
   gbuffer_.normal_roughness = gl::Texture2D("gbuffer normal+roughness", GL_RGBA16F, width, height);
   gbuffer_.albedo_metallic = gl::Texture2D("gbuffer albedo+metallic", GL_RGBA8, width, height);
-  gbuffer_.material = gl::Texture2D("gbuffer material", GL_RGBA8UI, width, height);
+  // 16 bits a channel: the object id is a mesh index (Scene::kMaxMeshes = 65536).
+  gbuffer_.material = gl::Texture2D("gbuffer material", GL_RGBA16UI, width, height);
   gbuffer_.emission = gl::Texture2D("gbuffer emission", GL_RGBA16F, width, height);
   gbuffer_.fbo = gl::Framebuffer("gbuffer");
   const GLuint fbo = gbuffer_.fbo.id();
@@ -308,6 +309,15 @@ RgbaImageF Renderer::read_texture(const gl::Texture2D& tex) const {
                     static_cast<GLsizei>(im.pixels.size() * sizeof(float)), im.pixels.data());
   flip_rows(im.pixels, tex.width(), tex.height(), 4);
   return im;
+}
+
+std::vector<std::uint16_t> Renderer::read_material() const {
+  std::vector<std::uint16_t> m(static_cast<std::size_t>(width_) * height_ * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 2);
+  glGetTextureImage(gbuffer_.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT,
+                    static_cast<GLsizei>(m.size() * sizeof(std::uint16_t)), m.data());
+  flip_rows(m, width_, height_, 4);
+  return m;
 }
 
 RgbaImageF Renderer::read_linear() const { return read_texture(linear_); }

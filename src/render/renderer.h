@@ -26,7 +26,7 @@ enum class ViewMode : int {
   Lit = VIEW_LIT, Normal = VIEW_NORMAL, Depth = VIEW_DEPTH, Albedo = VIEW_ALBEDO,
   Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
   Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE, Offsets = VIEW_OFFSETS,
-  Holes = VIEW_HOLES,
+  Holes = VIEW_HOLES, Reflected = VIEW_REFLECTED,
 };
 // Names as the CLI takes them ("final", "reflection", ...), in enum order.
 const std::vector<std::string>& view_mode_names();
@@ -87,6 +87,9 @@ class Renderer {
   RgbaImageF read_linear() const;              // the displayed view's linear values
   RgbaImageF read_texture(const gl::Texture2D& tex) const;  // any float-readable target
   std::vector<float> read_depth() const;       // reversed-Z, row 0 = top
+  // The G-buffer's material target, 4 values a pixel (reflector id, reflectance*255, flags,
+  // object id), row 0 = top.
+  std::vector<std::uint16_t> read_material() const;
 
  private:
   Scene scene_;

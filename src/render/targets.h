@@ -8,7 +8,7 @@ struct GBuffer {
   gl::Texture2D depth;             // D32F, reversed-Z, cleared to 0
   gl::Texture2D normal_roughness;  // RGBA16F: view-space normal, perceptual roughness
   gl::Texture2D albedo_metallic;   // RGBA8: linear albedo, metallic
-  gl::Texture2D material;          // RGBA8UI: reflector id, reflectance*255, flags
+  gl::Texture2D material;          // RGBA16UI: reflector id, reflectance*255, flags, object (mesh) id
   gl::Texture2D emission;          // RGBA16F: emitted radiance
   gl::Framebuffer fbo;
   gl::Texture2D back_depth;        // D32F: nearest back faces, drawn only for techniques that ask

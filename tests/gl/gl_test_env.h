@@ -30,14 +30,9 @@ inline const float* texel(const RgbaImageF& im, int x, int y) {
 // Pixels of planar reflectors (G-buffer reflector id > 0), row 0 = top like read-back images.
 inline std::vector<bool> planar_mask(const Renderer& r) {
   const int w = r.width(), h = r.height();
-  std::vector<std::uint8_t> m(static_cast<std::size_t>(w) * h * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(r.gbuffer().material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(m.size()), m.data());
+  const std::vector<std::uint16_t> m = r.read_material();
   std::vector<bool> out(static_cast<std::size_t>(w) * h);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      out[static_cast<std::size_t>(h - 1 - y) * w + x] = m[(static_cast<std::size_t>(y) * w + x) * 4] > 0;
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = m[i * 4] > 0;
   return out;
 }
 
