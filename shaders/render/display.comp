@@ -1,6 +1,7 @@
 // Display: turns the chosen view into an 8-bit sRGB image (PNG, window) and a linear float
 // image (EXR, metrics). Tone mapping happens only here.
 #include "common/gbuffer.glsl"
+#include "common/environment.glsl"
 #include "shared/tonemap.h"
 #include "shared/display.h"
 
@@ -30,6 +31,15 @@ void main() {
     v = texelFetch(reflection_tex, p, 0).rgb;
   } else if (u_view == VIEW_LIT) {
     v = texelFetch(lit_tex, p, 0).rgb;
+  } else if (u_view == VIEW_REFLECTED) {
+    // What the standard composite multiplies by the specular weight (the error a technique
+    // makes before a dielectric's small F0 hides it); black off the reflective pixels.
+    GSample g = gbuffer_fetch(p);
+    if (is_reflective(g)) {
+      vec4 refl = texelFetch(reflection_tex, p, 0);
+      vec3 env = environment_radiance(view_to_world_dir(reflect(normalize(g.pos_vs), g.n_vs)));
+      v = mix(env, refl.rgb, clamp(refl.a, 0.0, 1.0));
+    }
   } else {
     hdr = false;
     GSample g = gbuffer_fetch(p);

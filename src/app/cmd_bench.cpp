@@ -205,11 +205,12 @@ int run_bench(const BenchOptions& o) {
       auto frame = std::make_unique<ScoredFrame>(*renderer, camera, *reference);
       FloorPass floor(renderer->shaders());
       const double floor_ms = floor.time(*renderer, timing);
-      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}};
+      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt};
       for (const Variant& v : variants) {
         progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
         EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing, floor_ms);
         run.results.push_back(ev.result);
+        if (v.technique == "planar" && !run.oracles) run.oracles = oracle_agreement(*frame, ev.score);
         ++done;
       }
       progress(done, total, "");

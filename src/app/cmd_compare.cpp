@@ -1,5 +1,6 @@
 // `ssrlab compare`: every technique and the reference on the same frame; a labelled grid of the
 // images and their difference heat maps, the results JSON, and a table on stdout.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -33,6 +34,7 @@ struct CompareOptions {
   std::string gl = "auto";
   int frames = 5;
   float exposure = 0.0f;
+  bool breakdown = false;
 };
 
 std::string fmt(const char* f, double v) {
@@ -67,6 +69,10 @@ int run_compare(const CompareOptions& o) {
   TimingOptions timing{1, o.frames, ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
 
   ScoredFrame frame(renderer, camera, *reference);
+  if (o.breakdown && std::none_of(frame.classes().begin(), frame.classes().end(),
+                                  [](PixelClass c) { return c != PixelClass::NotReflective; }))
+    throw InputError("--breakdown needs reflective pixels, and scene '" + scene.name +
+                     "' has none in this view.");
   FloorPass floor(renderer.shaders());
   const double floor_ms = floor.time(renderer, timing);
 
@@ -75,6 +81,7 @@ int run_compare(const CompareOptions& o) {
   run.width = w;
   run.height = h;
   run.inherent_psnr = frame.inherent_psnr();
+  run.inherent = frame.inherent();
   std::vector<GridTile> top = {{"reference (truth)", to_rgba8(frame.truth())}};
   std::vector<GridTile> bottom = {{"classes: traceable/missing/sky", class_map(frame.classes(), w, h)}};
   for (const Variant& v : variants) {
@@ -85,6 +92,8 @@ int run_compare(const CompareOptions& o) {
     bottom.push_back({"diff vs truth, PSNR " + fmt("%.1f dB", e.psnr),
                       heat_map(ev.score.display, frame.truth(), frame.classes())});
     run.results.push_back(ev.result);
+    // The two oracles check each other (DESIGN §5) wherever planar runs.
+    if (v.technique == "planar" && !run.oracles) run.oracles = oracle_agreement(frame, ev.score);
   }
   std::vector<GridTile> tiles = top;
   tiles.insert(tiles.end(), bottom.begin(), bottom.end());
@@ -93,6 +102,7 @@ int run_compare(const CompareOptions& o) {
   if (!o.json.empty())
     write_text_file_atomic(o.json, to_json({gi.renderer, gi.version, clock}, build_revision(), run).dump(2) + "\n");
   std::printf("%s", results_table(run, clock).c_str());
+  if (o.breakdown) std::printf("\n%s", breakdown_table(run).c_str());
   std::printf("reference: %zu rays; grid %s%s%s\n", frame.reference_rays(), o.out.c_str(),
               o.json.empty() ? "" : ", results ", o.json.c_str());
   for (const TechniqueResult& r : run.results)
@@ -115,6 +125,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--json", o->json, "Results JSON (DESIGN §7).");
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   return {c, [o] { return run_compare(*o); }};
 }

@@ -1,4 +1,5 @@
 // `ssrlab render`: one frame of a scene with one technique, written as PNG or EXR.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "core/errors.h"
 #include "eval/grid.h"
 #include "eval/metrics.h"
+#include "eval/runner.h"
 #include "gl/gl.h"
 #include "reference/reference.h"
 #include "render/image_io.h"
@@ -59,12 +61,15 @@ int run_render(const RenderOptions& o) {
   const auto [w, h] = parse_size(o.size);
   const ImageFormat format = image_format_for(o.out);
   require_output_files({{"--out", o.out}});
-  // "classes" is the reference's own view: traceable / missing / sky per pixel.
+  // "classes" is the reference's own view: traceable / missing / sky per pixel. "hit-classes"
+  // scores the technique against it: correct / false / missed hits.
   const bool classes_view = o.view == "classes";
+  const bool hits_view = o.view == "hit-classes";
   if (classes_view && o.technique != "reference")
     throw InputError("--view classes needs --technique reference.");
-  if (classes_view && format != ImageFormat::Png) throw InputError("--view classes writes a .png.");
-  const ViewMode view = classes_view ? ViewMode::Final : parse_view_mode(o.view);
+  if ((classes_view || hits_view) && format != ImageFormat::Png)
+    throw InputError("--view " + o.view + " writes a .png.");
+  const ViewMode view = classes_view || hits_view ? ViewMode::Final : parse_view_mode(o.view);
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   std::string technique_name = o.technique;
@@ -74,18 +79,41 @@ int run_render(const RenderOptions& o) {
     technique_name = p.technique;
     sets.insert(sets.begin(), p.assignments.begin(), p.assignments.end());
   }
+  // hit-classes runs the reference too: reference.* assignments are its.
+  const std::vector<std::string> reference_sets = hits_view ? sets_for("reference", sets) : std::vector<std::string>{};
+  if (hits_view)
+    sets.erase(std::remove_if(sets.begin(), sets.end(), [](const std::string& s) {
+                 return s.rfind("reference.", 0) == 0;
+               }), sets.end());
   auto technique = create_technique(technique_name);
   apply_assignments(*technique, sets);
+  auto reference = hits_view ? create_technique("reference") : nullptr;
+  if (reference) apply_assignments(*reference, reference_sets);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20)
     throw InputError("exposure must be in [-20, 20] stops.");
   if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
     throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
+  if (hits_view && technique_name == "reference")
+    throw InputError("--view hit-classes scores a technique against the reference; name another technique.");
 
   auto ctx = open_gl(o.gl, {{w, h}});
   gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   Renderer renderer(scene, w, h, shaders);
   renderer.settings.exposure = o.exposure;
   technique->load(renderer.shaders());
+
+  if (hits_view) {
+    reference->load(renderer.shaders());
+    ScoredFrame frame(renderer, camera, *reference);
+    const ScoredFrame::Score s = frame.score(*technique);
+    write_png(o.out, hit_class_map(frame.hit_classes_of(s, *technique), frame.truth()));
+    const RegionFigures* all = s.breakdown.find("all");
+    std::printf("wrote %s (%dx%d, scene %s, technique %s, view hit-classes): %zu correct, %zu false, "
+                "%zu missed, %zu correct misses\n",
+                o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), all->hits.correct,
+                all->hits.false_hits, all->hits.missed, all->hits.correct_miss);
+    return s.error.nonfinite ? 1 : 0;
+  }
 
   gl::PassTimer timer(ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu);
   timer.begin_frame();
@@ -135,7 +163,7 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
   std::string views;
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
-  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only).")->capture_default_str();
+  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only)|hit-classes (a technique against the reference).")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");

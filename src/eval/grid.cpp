@@ -63,6 +63,26 @@ RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height) 
   return out;
 }
 
+RgbaImage8 hit_class_map(const std::vector<HitClass>& hits, const RgbaImageF& backdrop) {
+  if (hits.size() != static_cast<std::size_t>(backdrop.width) * backdrop.height)
+    throw std::invalid_argument("hit_class_map: sizes differ");
+  static const std::uint8_t colors[6][3] = {
+      {0, 0, 0}, {40, 190, 80}, {230, 40, 40}, {240, 200, 40}, {60, 110, 230}, {150, 60, 170}};
+  RgbaImage8 out{backdrop.width, backdrop.height, std::vector<std::uint8_t>(hits.size() * 4)};
+  for (std::size_t p = 0; p < hits.size(); ++p) {
+    std::uint8_t* o = &out.pixels[p * 4];
+    if (hits[p] == HitClass::NotReflective) {
+      const float* b = &backdrop.pixels[p * 4];
+      const float luma = 0.2126f * b[0] + 0.7152f * b[1] + 0.0722f * b[2];
+      o[0] = o[1] = o[2] = to8(0.35f * (std::isfinite(luma) ? luma : 0.0f));
+    } else {
+      for (int k = 0; k < 3; ++k) o[k] = colors[static_cast<std::size_t>(hits[p])][k];
+    }
+    o[3] = 255;
+  }
+  return out;
+}
+
 namespace {
 // Draws text with stb_easy_font (quads) scaled by `scale`, into an RGBA8 image.
 void draw_text(RgbaImage8& im, int x0, int y0, const std::string& text, int scale) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "eval/breakdown.h"
 #include "eval/metrics.h"
 
 namespace ssr {
@@ -18,6 +19,11 @@ RgbaImage8 heat_map(const RgbaImageF& a, const RgbaImageF& b, const std::vector<
 
 // The ground truth's classes: traceable green, missing red, sky blue, not reflective black.
 RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height);
+
+// A technique's hit classes over a dimmed grey copy of `backdrop` (display values): correct
+// hit green, false hit red, missed hit yellow, correct miss (missing or sky, not claimed) blue,
+// not handled purple.
+RgbaImage8 hit_class_map(const std::vector<HitClass>& hits, const RgbaImageF& backdrop);
 
 struct GridTile {
   std::string label;

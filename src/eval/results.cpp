@@ -48,6 +48,22 @@ nlohmann::json error_json(const ErrorMetrics& e) {
   };
 }
 
+nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+nlohmann::json class_json(const ClassFigures& f, PixelClass c) {
+  nlohmann::json j{{"pixels", f.pixels}, {"psnr", opt(f.psnr)}, {"psnr_reflection", opt(f.psnr_reflection)}};
+  if (c == PixelClass::Traceable) {
+    j["psnr_ideal"] = opt(f.psnr_ideal);
+    j["psnr_reflection_ideal"] = opt(f.psnr_reflection_ideal);
+    j["coverage"] = opt(f.coverage);
+    j["correct_coverage"] = opt(f.correct_coverage);
+    j["noise_floor_psnr"] = opt(f.noise_floor_psnr);
+  } else {
+    j["false_hit_rate"] = opt(f.false_hit_rate);
+  }
+  return j;
+}
+
 nlohmann::json technique_json(const TechniqueResult& r) {
   nlohmann::json params = nlohmann::json::object();
   for (const auto& [key, value] : r.params) params[key] = param_value_json(value);
@@ -63,6 +79,7 @@ nlohmann::json technique_json(const TechniqueResult& r) {
       {"floor_ms", r.floor_ms},
       {"time_over_floor", time_over_floor(r)},
       {"error", error_json(r.error)},
+      {"regions", breakdown_json(r.breakdown)},
       {"nonfinite", r.error.nonfinite},
   };
 }
@@ -75,12 +92,19 @@ nlohmann::json device_json(const DeviceInfo& d) {
 nlohmann::json run_json(const RunResults& run) {
   nlohmann::json results = nlohmann::json::array();
   for (const auto& r : run.results) results.push_back(technique_json(r));
-  return nlohmann::json{
+  nlohmann::json j{
       {"size", {run.width, run.height}},
       {"scene", run.scene},
       {"results", std::move(results)},
       {"inherent_psnr", run.inherent_psnr},
+      {"inherent", {{"traceable", opt(run.inherent.traceable)},
+                    {"missing", opt(run.inherent.missing)},
+                    {"sky", opt(run.inherent.sky)}}},
   };
+  if (run.oracles)
+    j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", opt(run.oracles->psnr)},
+                    {"within_1_255", opt(run.oracles->within_1_255)}};
+  return j;
 }
 
 // RFC 4180: a field with a comma, quote, CR or LF is quoted, quotes doubled.
@@ -119,6 +143,22 @@ std::string pad_right(const std::string& s, std::size_t w) {
 }
 
 }  // namespace
+
+nlohmann::json breakdown_json(const Breakdown& b) {
+  nlohmann::json regions = nlohmann::json::object();
+  for (const RegionFigures& f : b.regions)
+    regions[f.region.name()] = {
+        {"pixels", f.pixels},
+        {"handled", f.handled},
+        {"handled_pixels", f.handled_pixels},
+        {"traceable", class_json(f.traceable, PixelClass::Traceable)},
+        {"missing", class_json(f.missing, PixelClass::Missing)},
+        {"sky", class_json(f.sky, PixelClass::Sky)},
+        {"hits", {{"correct", f.hits.correct}, {"false", f.hits.false_hits}, {"missed", f.hits.missed},
+                  {"correct_miss", f.hits.correct_miss}}},
+    };
+  return regions;
+}
 
 TimeStats time_stats(std::vector<double> samples) {
   TimeStats t;
@@ -207,25 +247,11 @@ std::string results_csv(const std::vector<RunResults>& runs) {
   return out;
 }
 
-std::string results_table(const RunResults& run, const std::string& clock) {
-  const std::vector<std::string> header = {
-      "technique", "ms (" + clock + ")", "floor x", "PSNR dB", "PSNR trace dB", "coverage",
-      "nonfinite"};
-  std::vector<std::vector<std::string>> rows;
-  for (const auto& r : run.results) {
-    std::string name = r.label;
-    if (name.empty()) name = r.preset.empty() ? r.technique : r.technique + " [" + r.preset + "]";
-    const double tof = time_over_floor(r);
-    rows.push_back({
-        name,
-        fixed_text(r.time_ms.median, 2),
-        tof > 0.0 ? fixed_text(tof, 2) : std::string("-"),
-        fixed_text(r.error.psnr, 2),
-        r.error.traceable > 0 ? fixed_text(r.error.psnr_traceable, 2) : std::string("-"),
-        r.error.traceable > 0 ? fixed_text(r.error.coverage * 100.0, 1) + "%" : std::string("-"),
-        std::to_string(r.error.nonfinite),
-    });
-  }
+namespace {
+
+// Columns padded to their widest cell: the first left-aligned, the others right-aligned.
+std::string format_table(const std::vector<std::string>& header,
+                         const std::vector<std::vector<std::string>>& rows) {
   std::vector<std::size_t> width(header.size());
   for (std::size_t c = 0; c < header.size(); ++c) {
     width[c] = header[c].size();
@@ -236,15 +262,107 @@ std::string results_table(const RunResults& run, const std::string& clock) {
     for (std::size_t c = 1; c < cells.size(); ++c) s += "  " + pad_left(cells[c], width[c]);
     return s + "\n";
   };
-
-  std::string out = run.scene + " " + std::to_string(run.width) + "x" +
-                    std::to_string(run.height) + ", inherent PSNR " +
-                    fixed_text(run.inherent_psnr, 2) + " dB\n";
-  out += line(header);
+  std::string out = line(header);
   std::size_t total = width[0];
   for (std::size_t c = 1; c < width.size(); ++c) total += 2 + width[c];
   out += std::string(total, '-') + "\n";
   for (const auto& row : rows) out += line(row);
+  return out;
+}
+
+// A figure for the tables: "-" for an empty set.
+std::string db_text(const std::optional<double>& v) { return v ? fixed_text(*v, 2) : std::string("-"); }
+std::string percent_text(const std::optional<double>& v) {
+  return v ? fixed_text(*v * 100.0, 1) + "%" : std::string("-");
+}
+
+// A region's traceable figure, or "n/a" where the technique does not handle any of it.
+std::string region_cell(const TechniqueResult& r, const char* region, bool correct) {
+  const RegionFigures* f = r.breakdown.find(region);
+  if (!f) return "-";
+  if (f->pixels > 0 && f->handled_pixels == 0) return "n/a";
+  return correct ? percent_text(f->traceable.correct_coverage) : db_text(f->traceable.psnr_ideal);
+}
+
+// Claimed hits on missing and sky pixels over those pixels (the handled ones).
+std::optional<double> false_hit_rate(const RegionFigures& f) {
+  const std::size_t n = f.missing.pixels + f.sky.pixels;
+  if (n == 0) return std::nullopt;
+  const double claimed = f.missing.false_hit_rate.value_or(0) * static_cast<double>(f.missing.pixels) +
+                         f.sky.false_hit_rate.value_or(0) * static_cast<double>(f.sky.pixels);
+  return claimed / static_cast<double>(n);
+}
+
+std::string row_name(const TechniqueResult& r) {
+  if (!r.label.empty()) return r.label;
+  return r.preset.empty() ? r.technique : r.technique + " [" + r.preset + "]";
+}
+
+}  // namespace
+
+std::string results_table(const RunResults& run, const std::string& clock) {
+  const std::vector<std::string> header = {
+      "technique", "ms (" + clock + ")", "floor x", "PSNR dB", "trace dB", "cover", "correct",
+      "planar dB", "planar ok", "other dB", "other ok", "false hits", "nonfinite"};
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& r : run.results) {
+    const double tof = time_over_floor(r);
+    const RegionFigures* all = r.breakdown.find("all");
+    rows.push_back({
+        row_name(r),
+        fixed_text(r.time_ms.median, 2),
+        tof > 0.0 ? fixed_text(tof, 2) : std::string("-"),
+        fixed_text(r.error.psnr, 2),
+        r.error.traceable > 0 ? fixed_text(r.error.psnr_traceable, 2) : std::string("-"),
+        r.error.traceable > 0 ? fixed_text(r.error.coverage * 100.0, 1) + "%" : std::string("-"),
+        all ? percent_text(all->traceable.correct_coverage) : std::string("-"),
+        region_cell(r, "planar", false),
+        region_cell(r, "planar", true),
+        region_cell(r, "other", false),
+        region_cell(r, "other", true),
+        all ? percent_text(false_hit_rate(*all)) : std::string("-"),
+        std::to_string(r.error.nonfinite),
+    });
+  }
+  std::string out = run.scene + " " + std::to_string(run.width) + "x" +
+                    std::to_string(run.height) + ", inherent PSNR " +
+                    fixed_text(run.inherent_psnr, 2) + " dB (traceable " + db_text(run.inherent.traceable) +
+                    ", missing " + db_text(run.inherent.missing) + ", sky " + db_text(run.inherent.sky) + ")\n";
+  out += format_table(header, rows);
+  out += "trace dB: vs the screen-space ideal on traceable pixels; correct/ok: traceable pixels hit "
+         "with the right colour; n/a: not handled.\n";
+  if (run.oracles)
+    out += "oracles (planar vs reference, mirror reflector pixels): " + db_text(run.oracles->psnr) +
+           " dB, " + percent_text(run.oracles->within_1_255) + " within 1/255 (" +
+           std::to_string(run.oracles->pixels) + " pixels)\n";
+  return out;
+}
+
+std::string breakdown_table(const RunResults& run) {
+  const std::vector<std::string> header = {
+      "region", "pixels", "trace px", "vs truth", "vs ideal", "refl dB", "refl ideal", "cover",
+      "correct", "noise floor", "missing px", "vs truth", "false", "sky px", "vs truth", "false"};
+  std::string out;
+  for (const auto& r : run.results) {
+    std::vector<std::vector<std::string>> rows;
+    for (const RegionFigures& f : r.breakdown.regions) {
+      if (f.pixels == 0) continue;
+      std::string name = f.region.name();
+      if (f.handled_pixels == 0) {
+        rows.push_back({name, std::to_string(f.pixels), "not handled", "", "", "", "", "", "", "", "", "", "", "", "", ""});
+        continue;
+      }
+      if (!f.handled) name += " (" + std::to_string(f.handled_pixels) + " handled)";
+      rows.push_back({name, std::to_string(f.pixels), std::to_string(f.traceable.pixels),
+                      db_text(f.traceable.psnr), db_text(f.traceable.psnr_ideal),
+                      db_text(f.traceable.psnr_reflection), db_text(f.traceable.psnr_reflection_ideal),
+                      percent_text(f.traceable.coverage), percent_text(f.traceable.correct_coverage),
+                      db_text(f.traceable.noise_floor_psnr), std::to_string(f.missing.pixels),
+                      db_text(f.missing.psnr), percent_text(f.missing.false_hit_rate),
+                      std::to_string(f.sky.pixels), db_text(f.sky.psnr), percent_text(f.sky.false_hit_rate)});
+    }
+    out += row_name(r) + "\n" + format_table(header, rows) + "\n";
+  }
   return out;
 }
 

@@ -2,12 +2,14 @@
 // results JSON, bench JSON, CSV, and a text table for the terminal.
 #pragma once
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "eval/breakdown.h"
 #include "eval/metrics.h"
 
 namespace ssr {
@@ -39,6 +41,7 @@ struct TechniqueResult {
   std::vector<PassTiming> passes;   // every pass of the frame
   double floor_ms = 0;              // the floor pass (DESIGN §6)
   ErrorMetrics error;
+  Breakdown breakdown;              // per region and class (empty: not scored)
 };
 
 struct RunResults {  // one scene at one size
@@ -46,6 +49,8 @@ struct RunResults {  // one scene at one size
   int width = 0, height = 0;
   double inherent_psnr = 0;  // ideal vs truth, once per scene
   std::vector<TechniqueResult> results;
+  InherentFigures inherent;  // ideal vs truth per class
+  std::optional<OracleAgreement> oracles;  // planar vs reference, when planar ran
 };
 
 // time_ms.median / floor_ms; 0 when floor_ms is not positive.
@@ -65,8 +70,16 @@ nlohmann::json bench_json(const DeviceInfo& device, const std::string& revision,
 // One header line, then one line per technique result (RFC 4180 quoting, "\n" line ends).
 std::string results_csv(const std::vector<RunResults>& runs);
 
-// A fixed-width text table of one run for the terminal; `clock` labels the time column.
+// A fixed-width text table of one run for the terminal; `clock` labels the time column. Per
+// technique: the pooled figures and the planar / other split of the traceable PSNR against the
+// ideal and the correct coverage.
 std::string results_table(const RunResults& run, const std::string& clock);
+
+// Every region x class of every technique of a run, one block per technique (--breakdown).
+std::string breakdown_table(const RunResults& run);
+
+// The "regions" object of one result (README: results JSON).
+nlohmann::json breakdown_json(const Breakdown& b);
 
 // Writes `text` to path + ".tmp<pid>", then renames it onto `path`. On failure removes the
 // temporary file and throws RuntimeError (one sentence).

@@ -24,43 +24,116 @@ RgbaImageF display_values(const RgbaImageF& hdr, float exposure) {
   return out;
 }
 
-RgbaImageF ScoredFrame::final_display() {
-  renderer_.composite_and_display(ViewMode::Final, nullptr);
-  return display_values(renderer_.read_texture(renderer_.color()), renderer_.settings.exposure);
+// The composited image (ViewMode::Final) or the reflected radiance (ViewMode::Reflected) of
+// what the frame's reflection target holds now, as display values.
+RgbaImageF ScoredFrame::display_of(ViewMode view) {
+  renderer_.composite_and_display(view, nullptr);
+  const RgbaImageF hdr = view == ViewMode::Final ? renderer_.read_texture(renderer_.color())
+                                                 : renderer_.read_linear();
+  return display_values(hdr, renderer_.settings.exposure);
 }
 
+namespace {
+// Copies a reference output into the frame's reflection target, so that it goes through the
+// same composite as every technique.
+void put_reflection(Renderer& r, const gl::Texture2D& tex) {
+  glCopyImageSubData(tex.id(), GL_TEXTURE_2D, 0, 0, 0, 0, r.reflection().id(), GL_TEXTURE_2D, 0,
+                     0, 0, 0, r.width(), r.height(), 1);
+}
+}  // namespace
+
 ScoredFrame::ScoredFrame(Renderer& renderer, const Camera& camera, Technique& reference)
-    : renderer_(renderer) {
+    : renderer_(renderer), reference_(reference) {
   renderer_.render_inputs(camera, nullptr);
   renderer_.run_technique(reference, nullptr);
-  truth_ = final_display();
+  truth_ = display_of(ViewMode::Final);
+  truth_reflected_ = display_of(ViewMode::Reflected);
   const ReferenceOutputs out = reference_outputs(reference);
   if (!out.ideal || !out.classes)
     throw std::logic_error("ScoredFrame needs the reference technique");
-  classes_ = *out.classes;
   rays_ = out.rays;
-  // The ideal goes through the same composite: copy it into the frame's reflection target.
-  glCopyImageSubData(out.ideal->id(), GL_TEXTURE_2D, 0, 0, 0, 0, renderer_.reflection().id(),
-                     GL_TEXTURE_2D, 0, 0, 0, 0, renderer_.width(), renderer_.height(), 1);
-  ideal_ = final_display();
-  std::vector<PixelClass> all = classes_;
-  inherent_psnr_ = psnr_from_rmse(rmse_where(ideal_, truth_, all, [](PixelClass c) {
+  put_reflection(renderer_, *out.ideal);
+  ideal_ = display_of(ViewMode::Final);
+  ideal_reflected_ = display_of(ViewMode::Reflected);
+
+  labels_.width = renderer_.width();
+  labels_.height = renderer_.height();
+  labels_.classes = *out.classes;
+  labels_.reflectors = static_cast<int>(renderer_.scene().reflectors.size());
+  const std::vector<std::uint16_t> material = renderer_.read_material();
+  const RgbaImageF normal_rough = renderer_.read_texture(renderer_.gbuffer().normal_roughness);
+  const std::size_t n = labels_.classes.size();
+  labels_.reflector.resize(n);
+  labels_.roughness.resize(n);
+  normal_mapped_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    labels_.reflector[i] = material[i * 4];
+    labels_.roughness[i] = std::clamp(normal_rough.pixels[i * 4 + 3], 0.0f, 1.0f);
+    normal_mapped_[i] = (material[i * 4 + 2] & MATERIAL_FLAG_NORMAL_MAPPED) != 0;
+  }
+  inherent_psnr_ = psnr_from_rmse(rmse_where(ideal_, truth_, labels_.classes, [](PixelClass c) {
     return c != PixelClass::NotReflective;
   }));
 }
 
+InherentFigures ScoredFrame::inherent() const {
+  ReferenceImages r;
+  r.truth = &truth_;
+  r.ideal = &ideal_;
+  return compute_inherent(labels_, r);
+}
+
+ReferenceImages ScoredFrame::references(int samples) {
+  ReferenceImages r{&truth_, &ideal_, &truth_reflected_, &ideal_reflected_, nullptr};
+  if (samples <= 0) return r;
+  auto it = ideal_at_samples_.find(samples);
+  if (it == ideal_at_samples_.end()) {
+    // The same reference with `samples` rays a rough pixel and another seed, so that its
+    // samples are independent of the converged ideal's.
+    auto ref = create_technique("reference");
+    ParamSet from = reference_.params(), to = ref->params();
+    for (std::size_t i = 0; i < from.size(); ++i) to.set(i, from.get(i));
+    to.set(static_cast<std::size_t>(to.find("samples")), samples);
+    const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
+    to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + 7919) % 1000000));
+    ref->load(renderer_.shaders());
+    renderer_.run_technique(*ref, nullptr);
+    put_reflection(renderer_, *reference_outputs(*ref).ideal);
+    it = ideal_at_samples_.emplace(samples, display_of(ViewMode::Final)).first;
+  }
+  r.ideal_at_samples = &it->second;
+  return r;
+}
+
+int technique_samples(Technique& t) {
+  ParamSet p = t.params();
+  const int i = p.find("samples");
+  return i < 0 ? 0 : static_cast<int>(p.get(static_cast<std::size_t>(i)));
+}
+
 ScoredFrame::Score ScoredFrame::score(Technique& t) {
+  // The noise floor's reference run (if a new sample count) overwrites the reflection target:
+  // it runs first.
+  const ReferenceImages refs = references(technique_samples(t));
   renderer_.run_technique(t, nullptr);
   Score s;
   s.reflection = renderer_.read_texture(renderer_.reflection());
-  s.display = final_display();
-  std::vector<float> confidence(s.reflection.pixels.size() / 4);
-  for (std::size_t i = 0; i < confidence.size(); ++i) confidence[i] = s.reflection.pixels[i * 4 + 3];
-  s.error = compute_metrics(s.display, truth_, ideal_, classes_, confidence);
+  s.display = display_of(ViewMode::Final);
+  s.reflected = display_of(ViewMode::Reflected);
+  s.confidence.resize(s.reflection.pixels.size() / 4);
+  for (std::size_t i = 0; i < s.confidence.size(); ++i) s.confidence[i] = s.reflection.pixels[i * 4 + 3];
+  s.error = compute_metrics(s.display, truth_, ideal_, labels_.classes, s.confidence);
   // Non-finite values anywhere in the technique's output count, not only where metrics look.
   s.error.nonfinite = count_nonfinite(s.reflection.pixels) +
                       count_nonfinite(renderer_.read_texture(renderer_.color()).pixels);
+  s.breakdown = compute_breakdown(labels_, {&s.display, &s.reflected, &s.confidence}, refs,
+                                  technique_info(t.name()).planar_only);
   return s;
+}
+
+std::vector<HitClass> ScoredFrame::hit_classes_of(const Score& s, const Technique& t) {
+  return hit_classes(labels_, {&s.display, &s.reflected, &s.confidence}, references(0),
+                     technique_info(t.name()).planar_only);
 }
 
 namespace {
@@ -141,7 +214,14 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.result.passes = tm.passes;
   ev.result.floor_ms = floor_ms;
   ev.result.error = ev.score.error;
+  ev.result.breakdown = ev.score.breakdown;
   return ev;
+}
+
+OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar) {
+  std::vector<bool> eligible(frame.normal_mapped().size());
+  for (std::size_t i = 0; i < eligible.size(); ++i) eligible[i] = !frame.normal_mapped()[i];
+  return compare_oracles(frame.labels(), planar.reflected, frame.truth_reflected(), eligible);
 }
 
 std::vector<std::pair<std::string, std::string>> param_list(Technique& t) {

@@ -1,10 +1,12 @@
 // Scoring and timing techniques on one frame: the engine of `ssrlab compare` and `ssrlab bench`.
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/variants.h"
+#include "eval/breakdown.h"
 #include "eval/metrics.h"
 #include "eval/results.h"
 #include "gl/timer.h"
@@ -25,27 +27,47 @@ class ScoredFrame {
   ScoredFrame(Renderer& renderer, const Camera& camera, Technique& reference);
 
   struct Score {
-    ErrorMetrics error;
+    ErrorMetrics error;     // pooled figures (DESIGN §7's `error`)
+    Breakdown breakdown;    // per region and class
     RgbaImageF display;     // the technique's final image, display values
+    RgbaImageF reflected;   // its reflected radiance before the specular weight, display values
     RgbaImageF reflection;  // its reflection texture (rgb, confidence)
+    std::vector<float> confidence;
   };
   // Runs `t` on this frame's inputs and scores it.
   Score score(Technique& t);
 
   const RgbaImageF& truth() const { return truth_; }      // reference final image, display values
   const RgbaImageF& ideal() const { return ideal_; }      // screen-space ideal, display values
-  const std::vector<PixelClass>& classes() const { return classes_; }
+  const RgbaImageF& truth_reflected() const { return truth_reflected_; }
+  const RgbaImageF& ideal_reflected() const { return ideal_reflected_; }
+  const std::vector<PixelClass>& classes() const { return labels_.classes; }
+  const PixelLabels& labels() const { return labels_; }
+  // The G-buffer's normal-map flag per pixel (row 0 = top): the oracles skip those pixels.
+  const std::vector<bool>& normal_mapped() const { return normal_mapped_; }
   double inherent_psnr() const { return inherent_psnr_; }
+  InherentFigures inherent() const;
   std::size_t reference_rays() const { return rays_; }
+  // The references as the breakdown takes them; `samples` > 0 adds the noise floor of a
+  // technique tracing that many rays per rough pixel (one more reference run per new count).
+  ReferenceImages references(int samples);
+  // The hit classes of a score (for the `hit-classes` view).
+  std::vector<HitClass> hit_classes_of(const Score& s, const Technique& t);
 
  private:
-  RgbaImageF final_display();
+  RgbaImageF display_of(ViewMode view);
   Renderer& renderer_;
-  RgbaImageF truth_, ideal_;
-  std::vector<PixelClass> classes_;
+  Technique& reference_;
+  RgbaImageF truth_, ideal_, truth_reflected_, ideal_reflected_;
+  PixelLabels labels_;
+  std::vector<bool> normal_mapped_;
+  std::map<int, RgbaImageF> ideal_at_samples_;  // composited ideal at N samples a rough pixel
   double inherent_psnr_ = 0;
   std::size_t rays_ = 0;
 };
+
+// The rays per rough pixel of a technique (its `samples` parameter), 0 when it has none.
+int technique_samples(Technique& t);
 
 struct TimingOptions {
   int warmup = 3;
@@ -79,6 +101,10 @@ struct EvaluatedVariant {
 };
 EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const Camera& camera,
                                   const Variant& variant, const TimingOptions& timing, double floor_ms);
+
+// `planar` (its score on `frame`) against the reference: mirror, non-normal-mapped reflector
+// pixels (DESIGN §5: the two oracles check each other).
+OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar);
 
 // The parameters of a technique as key -> text, in table order (for results).
 std::vector<std::pair<std::string, std::string>> param_list(Technique& t);

@@ -23,22 +23,24 @@ const std::vector<TechniqueInfo>& technique_registry() {
       {"dda", "McGuire & Mara: perspective-correct per-pixel screen-space DDA with stride, jitter and refinement", make_dda_technique},
       {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
       {"ppr", "Pixel-Projected Reflections: planar reflectors by projection (imageAtomicMin), hole patching",
-       make_ppr_technique},
+       make_ppr_technique, /*planar_only=*/true},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",
-       make_planar_technique},
+       make_planar_technique, /*planar_only=*/true},
   };
   return registry;
 }
 
-std::unique_ptr<Technique> create_technique(const std::string& name) {
+const TechniqueInfo& technique_info(const std::string& name) {
   std::string known;
   for (const TechniqueInfo& t : technique_registry()) {
-    if (t.name == name) return t.create();
+    if (t.name == name) return t;
     known += (known.empty() ? "" : ", ") + t.name;
   }
   throw InputError("unknown technique '" + name + "' (known: " + known + ").");
 }
+
+std::unique_ptr<Technique> create_technique(const std::string& name) { return technique_info(name).create(); }
 
 }  // namespace ssr

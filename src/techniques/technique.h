@@ -57,10 +57,15 @@ struct TechniqueInfo {
   std::string name;
   std::string description;  // one line for `ssrlab techniques`
   std::function<std::unique_ptr<Technique>()> create;  // no GL needed
+  // Handles planar reflector pixels only (PPR, the planar oracle): the breakdown reports every
+  // other pixel as not handled instead of scoring the environment it leaves there.
+  bool planar_only = false;
 };
 
 // Every technique, in the order `ssrlab techniques` lists them.
 const std::vector<TechniqueInfo>& technique_registry();
+// The named technique's entry; throws InputError listing the known names.
+const TechniqueInfo& technique_info(const std::string& name);
 // Creates the named technique; throws InputError listing the known names.
 std::unique_ptr<Technique> create_technique(const std::string& name);
 
