@@ -14,6 +14,7 @@ layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_REF_TRUTH, rgba16f) uniform writeonly image2D out_truth;
 layout(binding = IMG_REF_IDEAL, rgba16f) uniform writeonly image2D out_ideal;
 layout(location = 0) uniform int u_pixel_count;
+layout(location = 1) uniform int u_bounces;  // segments a sample
 
 // Sampler arrays may only be indexed by constant expressions in GLSL 4.50: one branch per slot.
 vec3 albedo_map(int slot, vec2 uv, float lod_uv) {
@@ -25,33 +26,57 @@ vec3 albedo_map(int slot, vec2 uv, float lod_uv) {
   return c;
 }
 
+Surface surface_of(ReferenceSample s) {
+  ReferenceMaterial mat = materials[int(s.position.w)];
+  Surface surf;
+  surf.pos_ws = s.position.xyz;
+  surf.n_ws = s.normal.xyz;
+  surf.albedo = mat.albedo_metallic.rgb;
+  int slot = int(mat.params.z);
+  if (slot >= 0) surf.albedo *= albedo_map(slot, s.hit_pixel.zw, s.normal.w);
+  surf.metallic = mat.albedo_metallic.a;
+  surf.roughness = mat.params.x;
+  surf.reflectance = mat.params.y;
+  surf.emission = mat.emission.rgb;
+  return surf;
+}
+
+// Radiance arriving along one sample's first segment: its segments from the last back, each
+// hit shaded as the lit pass would, plus the composite's specular weight times what the next
+// segment brought (the multi-bounce truth; one segment is the single-bounce truth).
+vec3 sample_radiance(int first) {
+  vec3 radiance = vec3(0.0);
+  for (int b = u_bounces - 1; b >= 0; --b) {
+    ReferenceSample s = samples[first + b];
+    int m = int(s.position.w);
+    vec3 dir = s.direction.xyz;
+    if (m == -2) {
+      radiance = vec3(0.0);
+    } else if (m == -1) {
+      radiance = environment_radiance(dir);
+    } else {
+      Surface surf = surface_of(s);
+      vec3 next = radiance;
+      radiance = shade_surface(surf, -dir);
+      if (b + 1 < u_bounces && int(samples[first + b + 1].position.w) != -2)
+        radiance += specular_weight(f0_of(surf.albedo, surf.metallic, surf.reflectance),
+                                    dot(surf.n_ws, -dir), surf.roughness) * next;
+    }
+  }
+  return radiance;
+}
+
 void main() {
   int i = int(gl_GlobalInvocationID.x);
   if (i >= u_pixel_count) return;
   ivec4 px = pixels[i].data;
   vec3 truth = vec3(0.0), ideal = vec3(0.0);
   for (int k = 0; k < px.w; ++k) {
-    ReferenceSample s = samples[px.z + k];
-    vec3 dir = s.direction.xyz;
-    vec3 env = environment_radiance(dir);
-    int m = int(s.position.w);
-    if (m < 0) {
-      truth += env;
-    } else {
-      ReferenceMaterial mat = materials[m];
-      Surface surf;
-      surf.pos_ws = s.position.xyz;
-      surf.n_ws = s.normal.xyz;
-      surf.albedo = mat.albedo_metallic.rgb;
-      int slot = int(mat.params.z);
-      if (slot >= 0) surf.albedo *= albedo_map(slot, s.hit_pixel.zw, s.normal.w);
-      surf.metallic = mat.albedo_metallic.a;
-      surf.roughness = mat.params.x;
-      surf.reflectance = mat.params.y;
-      surf.emission = mat.emission.rgb;
-      truth += shade_surface(surf, -dir);
-    }
-    ideal += s.direction.w > 0.5 ? texelFetch(lit_tex, ivec2(s.hit_pixel.xy), 0).rgb : env;
+    int first = (px.z + k) * u_bounces;
+    ReferenceSample s = samples[first];
+    truth += sample_radiance(first);
+    ideal += s.direction.w > 0.5 ? texelFetch(lit_tex, ivec2(s.hit_pixel.xy), 0).rgb
+                                 : environment_radiance(s.direction.xyz);
   }
   float inv = px.w > 0 ? 1.0 / float(px.w) : 0.0;
   float a = px.w > 0 ? 1.0 : 0.0;

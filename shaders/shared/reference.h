@@ -13,13 +13,17 @@ SSR_SHARED_BEGIN
 #define IMG_REF_TRUTH 0
 #define IMG_REF_IDEAL 1
 
+// One ray segment. A sample is `bounces` consecutive segments (segment 0: the reflection ray;
+// segment b: the reflection of segment b-1's hit, present only where that hit is reflective).
 struct ReferenceSample {
-  vec4 position;   // xyz: world hit position; w: material index, or -1 when the ray escaped
+  vec4 position;   // xyz: world hit position; w: material index, -1 when the ray escaped, -2 for
+                   //      an unused segment (the path ended before it)
   vec4 normal;     // xyz: unit world shading normal facing the ray; w: log2 of the texture
                    //      footprint in uv units (ray cone), before the texture's size is added
   vec4 direction;  // xyz: unit ray direction (away from the reflecting point); w: 1 when the hit
                    //      is traceable (visible on screen), else 0
-  vec4 hit_pixel;  // xy: the hit's pixel (GL convention, for the screen-space ideal); zw: uv
+  vec4 hit_pixel;  // xy: the hit's pixel (GL convention, for the screen-space ideal; segment 0
+                   //      only); zw: uv
 };
 
 struct ReferencePixel {

@@ -10,6 +10,7 @@ struct ReferenceParams {
   int seed SSR_DEFAULT(1);                 // random seed: same seed, same image
   float mirror_roughness SSR_DEFAULT(0.01f);  // below this perceptual roughness one mirror ray is traced
   float depth_tolerance SSR_DEFAULT(0.02f);   // relative depth difference that still counts as "visible on screen"
+  int bounces SSR_DEFAULT(1);              // ray segments per sample: 2+ shades reflective hits with their own reflection
 };
 
 SSR_SHARED_END

@@ -28,6 +28,9 @@ const ParamDesc kTable[] = {
                     "Pixels with a perceptual roughness below this trace a single mirror ray."),
     SSR_PARAM_FLOAT(P, depth_tolerance, 0.0001, 0.5, 0.001, "relative",
                     "A true hit counts as visible on screen when the depth buffer there is within this relative distance."),
+    SSR_PARAM_INT(P, bounces, 1, 8, "segments",
+                  "Reflection bounces: 1 shades hits with direct and ambient light only (a mirror seen in a mirror is "
+                  "black); N follows reflective hits (reflector or F0 above the frame's threshold) N-1 more times."),
 };
 
 // Samples per GPU batch: bounds the upload to ~256 MiB whatever the size and sample count.
@@ -122,6 +125,58 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   std::size_t batch_first = 0;
   std::vector<shared::ReferenceSample> samples;
 
+  // Multi-bounce truth: `bounces` segments a sample, segment 0 the reflection ray itself. A hit
+  // on a reflective surface (a reflector, or F0 at the frame's threshold, as the G-buffer marks
+  // reflective pixels) continues along its own reflection, so the GPU can shade it with what
+  // it reflects: L = shade(hit) + specular_weight * L(next segment).
+  const std::size_t bounces = static_cast<std::size_t>(params_.bounces);
+  std::vector<bool> reflective_mesh(scene.meshes.size());
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Material& mt = scene.materials[static_cast<std::size_t>(scene.meshes[m].material)];
+    const glm::vec3 f0 = glm::mix(glm::vec3(0.16f * mt.reflectance * mt.reflectance), mt.albedo, mt.metallic);
+    reflective_mesh[m] = scene.meshes[m].reflector > 0 ||
+                         std::max({f0.x, f0.y, f0.z}) >= in.renderer.settings.reflective_f0;
+  }
+  auto follow_bounces = [&](RayHit hit, glm::vec3 dir, double dist, shared::ReferenceSample* seg, unsigned x,
+                            unsigned y, unsigned k) {
+    for (std::size_t b = 1; b < bounces; ++b) {
+      if (!reflective_mesh[static_cast<std::size_t>(hit.mesh)]) return;
+      const Material& mt = scene.materials[static_cast<std::size_t>(scene.meshes[static_cast<std::size_t>(hit.mesh)].material)];
+      glm::vec3 next = glm::reflect(dir, hit.normal);
+      if (mt.roughness >= params_.mirror_roughness) {
+        const glm::vec2 xi = shared::sample_xi(x, y, k + 0x10000u * static_cast<unsigned>(b),
+                                               static_cast<unsigned>(params_.seed));
+        const glm::vec3 g = shared::sample_reflection(hit.normal, -dir, mt.roughness, xi);
+        if (glm::dot(g, hit.normal) > 0.0f) next = g;
+      }
+      next = glm::normalize(next);
+      const glm::dvec3 p(hit.position);
+      const double mag = std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+      const glm::vec3 origin = glm::vec3(p + glm::dvec3(hit.normal) * (4e-6 * mag + 1e-5 * dist));
+      const RayHit nh = bvh_->trace(origin, next);
+      shared::ReferenceSample& s = seg[b];
+      s.direction = glm::vec4(next, 0.0f);
+      if (!nh.hit) {
+        s.position = glm::vec4(0, 0, 0, -1);
+        return;
+      }
+      dist += nh.t;
+      s.position = glm::vec4(nh.position, static_cast<float>(scene.meshes[static_cast<std::size_t>(nh.mesh)].material));
+      const double footprint = pixel_angle * dist / std::max(static_cast<double>(nh.cos_incidence), 0.05) *
+                               static_cast<double>(nh.uv_density);
+      s.normal = glm::vec4(nh.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+      s.hit_pixel = glm::vec4(0, 0, nh.uv);
+      hit = nh;
+      dir = next;
+    }
+  };
+  // An unused segment (the path ended before it) adds nothing.
+  auto unused_segment = [] {
+    shared::ReferenceSample s{};
+    s.position = glm::vec4(0, 0, 0, -2);
+    return s;
+  };
+
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   std::atomic<int> next_row{0};
   auto worker = [&] {
@@ -173,7 +228,8 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
             if (glm::dot(dir, n_ws) <= 0.0f) dir = glm::reflect(-v_ws, n_ws);
           }
           dir = glm::normalize(dir);
-          shared::ReferenceSample& s = samples[pixel_start[i] + static_cast<std::size_t>(k) - batch_first];
+          const std::size_t first_segment = (pixel_start[i] + static_cast<std::size_t>(k) - batch_first) * bounces;
+          shared::ReferenceSample& s = samples[first_segment];
           s.direction = glm::vec4(dir, 0.0f);
           const RayHit hit = bvh_->trace(origin, dir);
           if (!hit.hit) {
@@ -215,6 +271,9 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
           (visible ? traceable : missing)++;
+          if (bounces > 1)
+            follow_bounces(hit, dir, cam_dist + hit.t, &samples[first_segment], static_cast<unsigned>(x),
+                           static_cast<unsigned>(y), static_cast<unsigned>(k));
         }
         PixelClass c = PixelClass::Sky;
         if (2 * traceable > n) c = PixelClass::Traceable;
@@ -265,10 +324,10 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     batch_first = pixel_start[static_cast<std::size_t>(batch_y0) * w];
     do {
       ++batch_y1;
-    } while (batch_y1 < h && pixel_start[static_cast<std::size_t>(batch_y1 + 1) * w] - batch_first <= kMaxBatchSamples);
+    } while (batch_y1 < h && (pixel_start[static_cast<std::size_t>(batch_y1 + 1) * w] - batch_first) * bounces <= kMaxBatchSamples);
     const std::size_t batch_end = pixel_start[static_cast<std::size_t>(batch_y1) * w];
     if (batch_end == batch_first) continue;  // no reflective pixel in these rows
-    samples.assign(batch_end - batch_first, shared::ReferenceSample{});
+    samples.assign((batch_end - batch_first) * bounces, unused_segment());
     next_row = batch_y0;
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(worker);
@@ -297,6 +356,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
     glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
+    glProgramUniform1i(program_.id(), 1, static_cast<int>(bounces));
     glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glFinish();  // the batch's buffers die at the end of this scope

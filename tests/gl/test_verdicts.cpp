@@ -167,3 +167,75 @@ TEST(Verdicts, ObjectIdsAndRegionsFollowTheGBuffer) {
   EXPECT_TRUE(p.breakdown.find("planar")->handled);
   test::expect_no_gl_errors();
 }
+
+// Two facing mirrors of F0 = 1 (the split-sum weight is exactly 1 at roughness 0) under a
+// constant environment c, with no light and no ambient: a path is worth c if it leaves the
+// mirrors within `reference.bounces` segments and 0 if it is still bouncing. So every mirror
+// pixel's truth is 0 or c, more bounces only turn 0s into c, and one bounce shows mirror B in
+// mirror A as black (the single-bounce truth a newcomer finds wrong). Measured at 96x64 on
+// llvmpipe: 0, 1816, 4560 and 5690 of 6144 mirror pixels see c with 1, 2, 4 and 8 bounces.
+TEST(Verdicts, MultiBounceTruthBetweenFacingMirrors) {
+  Scene s;
+  s.name = "facing-mirrors";
+  s.materials = {material(glm::vec3(1.0f), 0.0f, 1.0f, 1.0f)};
+  const glm::mat4 up(1.0f);
+  add_mesh(s, meshgen::plane({12.0f, 8.0f}), "mirror_a", 0,
+           glm::rotate(glm::translate(up, {0.0f, 1.5f, 0.0f}), 1.5707964f, glm::vec3(1, 0, 0)), 1);
+  add_mesh(s, meshgen::plane({12.0f, 8.0f}), "mirror_b", 0,
+           glm::rotate(glm::translate(up, {0.0f, 1.5f, 3.0f}), -1.5707964f, glm::vec3(1, 0, 0)), 2);
+  Reflector a, b;
+  a.center = {0.0f, 1.5f, 0.0f};
+  a.tangent = {0, 1, 0};
+  a.bitangent = {1, 0, 0};  // normal +Z
+  a.half_extents = {4.0f, 6.0f};
+  b.center = {0.0f, 1.5f, 3.0f};
+  b.tangent = {1, 0, 0};
+  b.bitangent = {0, 1, 0};  // normal -Z
+  b.half_extents = {6.0f, 4.0f};
+  s.reflectors = {a, b};
+  s.environment.type = Environment::Type::Constant;
+  s.environment.constant = glm::vec3(0.5f);
+  s.ambient = 0.0f;
+  Camera c;
+  c.name = "between";
+  c.position = {0.4f, 1.5f, 2.0f};
+  c.target = {0.0f, 1.5f, 0.0f};
+  c.fov_y_deg = 60.0f;
+  s.cameras.push_back(c);
+  validate(s);
+
+  Renderer r(s, 96, 64);
+  auto reflected = [&](int bounces) {
+    auto ref = create_technique("reference");
+    ParamSet p = ref->params();
+    p.set(static_cast<std::size_t>(p.find("bounces")), bounces);
+    ref->load(r.shaders());
+    r.render_inputs(s.cameras[0], nullptr);
+    r.run_technique(*ref, nullptr);
+    return r.read_texture(r.reflection());
+  };
+  std::vector<std::size_t> lit_counts;
+  RgbaImageF previous;
+  for (int bounces : {1, 2, 4, 8}) {
+    const RgbaImageF im = reflected(bounces);
+    std::size_t mirror = 0, lit = 0, other = 0, darkened = 0;
+    for (std::size_t i = 0; i < im.pixels.size(); i += 4) {
+      if (im.pixels[i + 3] <= 0.0f) continue;  // not reflective
+      ++mirror;
+      const float v = im.pixels[i];
+      if (std::abs(v - 0.5f) < 0.01f) ++lit;
+      else if (std::abs(v) >= 0.01f) ++other;
+      if (!previous.pixels.empty() && previous.pixels[i] > 0.25f && v < 0.25f) ++darkened;
+    }
+    std::printf("facing mirrors, %d bounce(s): %zu of %zu mirror pixels see the environment\n", bounces, lit, mirror);
+    EXPECT_GT(mirror, 96u * 64u / 2u);
+    EXPECT_EQ(other, 0u) << bounces << " bounces: every path is worth 0 or c";
+    EXPECT_EQ(darkened, 0u) << bounces << " bounces: more bounces only add light";
+    if (bounces == 1) EXPECT_LT(lit, mirror / 10) << "one bounce: mirror B in mirror A is black";
+    lit_counts.push_back(lit);
+    previous = im;
+  }
+  for (std::size_t k = 1; k < lit_counts.size(); ++k) EXPECT_GT(lit_counts[k], lit_counts[k - 1]);
+  EXPECT_GT(lit_counts.back(), lit_counts.front() + 96u * 64u / 4u);
+  test::expect_no_gl_errors();
+}
