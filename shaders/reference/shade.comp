@@ -15,6 +15,9 @@ layout(binding = IMG_REF_TRUTH, rgba16f) uniform writeonly image2D out_truth;
 layout(binding = IMG_REF_IDEAL, rgba16f) uniform writeonly image2D out_ideal;
 layout(location = 0) uniform int u_pixel_count;
 layout(location = 1) uniform int u_bounces;  // segments a sample
+// 1 for refraction: where the hit is not traceable the ideal has confidence 0 (a tracer that
+// finds nothing leaves the unbent background), instead of the environment.
+layout(location = 2) uniform int u_ideal_traceable_only;
 
 // Sampler arrays may only be indexed by constant expressions in GLSL 4.50: one branch per slot.
 vec3 albedo_map(int slot, vec2 uv, float lod_uv) {
@@ -81,5 +84,10 @@ void main() {
   float inv = px.w > 0 ? 1.0 / float(px.w) : 0.0;
   float a = px.w > 0 ? 1.0 : 0.0;
   imageStore(out_truth, px.xy, vec4(truth * inv, a));
-  imageStore(out_ideal, px.xy, vec4(ideal * inv, a));
+  if (u_ideal_traceable_only == 1) {
+    bool found = samples[px.z * u_bounces].direction.w > 0.5;
+    imageStore(out_ideal, px.xy, found ? vec4(ideal * inv, 1.0) : vec4(0.0));
+  } else {
+    imageStore(out_ideal, px.xy, vec4(ideal * inv, a));
+  }
 }

@@ -13,6 +13,8 @@ layout(binding = IMG_OUT, rgba8) uniform writeonly image2D out_display;
 layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_linear;
 layout(location = 0) uniform int u_view;
 layout(binding = TEX_DEBUG) uniform sampler2D debug_tex;
+layout(binding = TEX_GLASS_SURFACE) uniform sampler2D glass_surface_tex;
+layout(binding = TEX_REFRACTION) uniform sampler2D refraction_tex;
 
 // Black -> purple -> orange -> yellow, for the debug heat maps.
 vec3 heat(float t) {
@@ -35,7 +37,12 @@ void main() {
     // What the standard composite multiplies by the specular weight (the error a technique
     // makes before a dielectric's small F0 hides it); black off the reflective pixels.
     GSample g = gbuffer_fetch(p);
-    if (is_reflective(g)) {
+    if (texelFetch(glass_surface_tex, p, 0).w >= 1.0) {
+      // Through glass: the refracted radiance the composite tints (the unbent background where
+      // the technique found none).
+      vec4 refr = texelFetch(refraction_tex, p, 0);
+      v = mix(texelFetch(lit_tex, p, 0).rgb, refr.rgb, clamp(refr.a, 0.0, 1.0));
+    } else if (is_reflective(g)) {
       vec4 refl = texelFetch(reflection_tex, p, 0);
       vec3 env = environment_radiance(view_to_world_dir(reflect(normalize(g.pos_vs), g.n_vs)));
       v = mix(env, refl.rgb, clamp(refl.a, 0.0, 1.0));

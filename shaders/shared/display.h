@@ -17,5 +17,5 @@
 #define VIEW_DISTANCE 12    // mean hit distance, heat map (0 .. 20 world units)
 #define VIEW_OFFSETS 13     // PPR: decoded offset to the source pixel as colour (0.5 = none)
 #define VIEW_HOLES 14       // PPR: red = hole before patching, yellow = still a hole after
-#define VIEW_REFLECTED 15   // reflected radiance the composite weights: mix(env, reflection.rgb, a)
+#define VIEW_REFLECTED 15   // what the composite weights: mix(env, reflection.rgb, a); through glass mix(lit, refraction.rgb, a)
 #define VIEW_COUNT 16

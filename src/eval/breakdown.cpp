@@ -52,7 +52,8 @@ void check_size(const RgbaImageF* im, const PixelLabels& l, const char* what) {
 
 void check_inputs(const PixelLabels& l, const TechniqueImages& t, const ReferenceImages& r) {
   const std::size_t n = static_cast<std::size_t>(l.width) * static_cast<std::size_t>(l.height);
-  if (l.classes.size() != n || l.reflector.size() != n || l.roughness.size() != n)
+  if (l.classes.size() != n || l.reflector.size() != n || l.roughness.size() != n ||
+      !(l.glass.empty() || l.glass.size() == n))
     throw std::invalid_argument("breakdown: the pixel labels do not match the frame's size.");
   if (!t.final || !t.reflected || !t.confidence || !r.truth || !r.ideal || !r.truth_reflected ||
       !r.ideal_reflected)
@@ -100,12 +101,14 @@ std::string Region::name() const {
     case RegionKind::Mirror: return "mirror";
     case RegionKind::Glossy: return "glossy";
     case RegionKind::Rough: return "rough";
+    case RegionKind::Refractive: return "refractive";
   }
   return "?";
 }
 
 bool Region::contains(const PixelLabels& l, std::size_t i) const {
   if (l.classes[i] == PixelClass::NotReflective) return false;
+  if (l.is_glass(i)) return kind == RegionKind::All || kind == RegionKind::Refractive;
   const float r = l.roughness[i];
   switch (kind) {
     case RegionKind::All: return true;
@@ -115,6 +118,7 @@ bool Region::contains(const PixelLabels& l, std::size_t i) const {
     case RegionKind::Mirror: return r < kMirrorBandBelow;
     case RegionKind::Glossy: return r >= kMirrorBandBelow && r <= kRoughBandAbove;
     case RegionKind::Rough: return r > kRoughBandAbove;
+    case RegionKind::Refractive: return false;
   }
   return false;
 }
@@ -122,7 +126,7 @@ bool Region::contains(const PixelLabels& l, std::size_t i) const {
 std::vector<Region> frame_regions(const PixelLabels& labels) {
   std::vector<Region> out = {{RegionKind::All, 0}, {RegionKind::Planar, 0}};
   for (int k = 1; k <= labels.reflectors; ++k) out.push_back({RegionKind::Reflector, k});
-  for (RegionKind k : {RegionKind::Other, RegionKind::Mirror, RegionKind::Glossy, RegionKind::Rough})
+  for (RegionKind k : {RegionKind::Other, RegionKind::Mirror, RegionKind::Glossy, RegionKind::Rough, RegionKind::Refractive})
     out.push_back({k, 0});
   return out;
 }
@@ -130,7 +134,8 @@ std::vector<Region> frame_regions(const PixelLabels& labels) {
 Region parse_region(const std::string& name, int reflectors) {
   static const std::pair<const char*, RegionKind> kFixed[] = {
       {"all", RegionKind::All},       {"planar", RegionKind::Planar}, {"other", RegionKind::Other},
-      {"mirror", RegionKind::Mirror}, {"glossy", RegionKind::Glossy}, {"rough", RegionKind::Rough}};
+      {"mirror", RegionKind::Mirror}, {"glossy", RegionKind::Glossy}, {"rough", RegionKind::Rough},
+      {"refractive", RegionKind::Refractive}};
   for (const auto& [n, k] : kFixed)
     if (name == n) return {k, 0};
   const std::string prefix = "reflector:";
@@ -143,7 +148,7 @@ Region parse_region(const std::string& name, int reflectors) {
                      std::to_string(reflectors) + ").");
   }
   throw InputError("unknown region '" + name +
-                   "' (known: all, planar, reflector:N, other, mirror, glossy, rough).");
+                   "' (known: all, planar, reflector:N, other, mirror, glossy, rough, refractive).");
 }
 
 HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* ideal_reflected) {
@@ -161,7 +166,8 @@ std::vector<HitClass> hit_classes(const PixelLabels& labels, const TechniqueImag
   check_inputs(labels, t, r);
   std::vector<HitClass> out(labels.classes.size());
   for (std::size_t i = 0; i < out.size(); ++i)
-    out[i] = planar_only && labels.reflector[i] == 0 && labels.classes[i] != PixelClass::NotReflective
+    out[i] = planar_only && (labels.reflector[i] == 0 || labels.is_glass(i)) &&
+                     labels.classes[i] != PixelClass::NotReflective
                  ? HitClass::NotHandled
                  : classify_hit(labels.classes[i], (*t.confidence)[i], px(t.reflected, i), px(r.ideal_reflected, i));
   return out;
@@ -180,7 +186,7 @@ Breakdown compute_breakdown(const PixelLabels& labels, const TechniqueImages& t,
     for (std::size_t i = 0; i < labels.classes.size(); ++i) {
       if (!region.contains(labels, i)) continue;
       ++f.pixels;
-      if (planar_only && labels.reflector[i] == 0) continue;
+      if (planar_only && (labels.reflector[i] == 0 || labels.is_glass(i))) continue;
       ++f.handled_pixels;
       const PixelClass c = labels.classes[i];
       ClassAccum& a = acc[static_cast<int>(c)];
@@ -199,7 +205,7 @@ Breakdown compute_breakdown(const PixelLabels& labels, const TechniqueImages& t,
         a.ideal.add(px(t.final, i), px(r.ideal, i));
         a.refl_ideal.add(px(t.reflected, i), px(r.ideal_reflected, i));
         a.correct += h == HitClass::Correct;
-        if (r.ideal_at_samples && labels.roughness[i] >= kMirrorBandBelow) {
+        if (r.ideal_at_samples && labels.roughness[i] >= kMirrorBandBelow && !labels.is_glass(i)) {
           a.noise.add(px(r.ideal_at_samples, i), px(r.ideal, i));
           any_rough_traceable = true;
         }
@@ -242,7 +248,7 @@ OracleAgreement compare_oracles(const PixelLabels& labels, const RgbaImageF& pla
   Accum acc;
   std::size_t within = 0;
   for (std::size_t i = 0; i < labels.classes.size(); ++i) {
-    if (labels.classes[i] == PixelClass::NotReflective || labels.reflector[i] == 0 || !eligible[i] ||
+    if (labels.classes[i] == PixelClass::NotReflective || labels.reflector[i] == 0 || labels.is_glass(i) || !eligible[i] ||
         !(labels.roughness[i] < max_roughness))
       continue;
     const float* a = px(&planar_reflected, i);

@@ -34,20 +34,25 @@ struct PixelLabels {
   std::vector<PixelClass> classes;       // the reference's class (NotReflective: no figure)
   std::vector<std::uint16_t> reflector;  // 0 = not on a planar reflector, else 1-based id
   std::vector<float> roughness;          // perceptual roughness from the G-buffer
+  // Pixels seen through a transparent surface (empty: none). Their class and figures are their
+  // refraction's: they belong to "all" and "refractive" only.
+  std::vector<bool> glass;
   int reflectors = 0;                    // planar reflectors in the scene
+  bool is_glass(std::size_t i) const { return !glass.empty() && glass[i]; }
 };
 
-enum class RegionKind { All, Planar, Reflector, Other, Mirror, Glossy, Rough };
+enum class RegionKind { All, Planar, Reflector, Other, Mirror, Glossy, Rough, Refractive };
 
 struct Region {
   RegionKind kind = RegionKind::All;
   int reflector = 0;  // 1-based, for RegionKind::Reflector
-  std::string name() const;  // "all", "planar", "reflector:N", "other", "mirror", "glossy", "rough"
+  // "all", "planar", "reflector:N", "other", "mirror", "glossy", "rough", "refractive"
+  std::string name() const;
   bool contains(const PixelLabels& l, std::size_t i) const;
 };
 
 // Every region of a frame in report order: all, planar, reflector:1..N, other, mirror, glossy,
-// rough (reflector:N only for the scene's reflectors).
+// rough, refractive (reflector:N only for the scene's reflectors).
 std::vector<Region> frame_regions(const PixelLabels& labels);
 // Parses a region name as `--region`-style options take it; throws InputError on an unknown one.
 Region parse_region(const std::string& name, int reflectors);
@@ -67,7 +72,9 @@ HitClass classify_hit(PixelClass c, float confidence, const float* reflected, co
 // One technique's images on the frame; all display values, the same size as the labels.
 struct TechniqueImages {
   const RgbaImageF* final = nullptr;      // composited image
-  const RgbaImageF* reflected = nullptr;  // reflected radiance before the specular weight
+  // Reflected radiance before the specular weight (on glass pixels: the refracted radiance
+  // before the tint and Fresnel weight)
+  const RgbaImageF* reflected = nullptr;
   const std::vector<float>* confidence = nullptr;
 };
 

@@ -34,11 +34,13 @@ RgbaImageF ScoredFrame::display_of(ViewMode view) {
 }
 
 namespace {
-// Copies a reference output into the frame's reflection target, so that it goes through the
-// same composite as every technique.
-void put_reflection(Renderer& r, const gl::Texture2D& tex) {
-  glCopyImageSubData(tex.id(), GL_TEXTURE_2D, 0, 0, 0, 0, r.reflection().id(), GL_TEXTURE_2D, 0,
+// Copies the reference's screen-space ideal into the frame's reflection and refraction targets,
+// so that it goes through the same composite as every technique.
+void put_ideal(Renderer& r, const ReferenceOutputs& out) {
+  glCopyImageSubData(out.ideal->id(), GL_TEXTURE_2D, 0, 0, 0, 0, r.reflection().id(), GL_TEXTURE_2D, 0,
                      0, 0, 0, r.width(), r.height(), 1);
+  glCopyImageSubData(out.ideal_refraction->id(), GL_TEXTURE_2D, 0, 0, 0, 0, r.refraction().id(),
+                     GL_TEXTURE_2D, 0, 0, 0, 0, r.width(), r.height(), 1);
 }
 }  // namespace
 
@@ -52,7 +54,7 @@ ScoredFrame::ScoredFrame(Renderer& renderer, const Camera& camera, Technique& re
   if (!out.ideal || !out.classes)
     throw std::logic_error("ScoredFrame needs the reference technique");
   rays_ = out.rays;
-  put_reflection(renderer_, *out.ideal);
+  put_ideal(renderer_, out);
   ideal_ = display_of(ViewMode::Final);
   ideal_reflected_ = display_of(ViewMode::Reflected);
 
@@ -62,7 +64,9 @@ ScoredFrame::ScoredFrame(Renderer& renderer, const Camera& camera, Technique& re
   labels_.reflectors = static_cast<int>(renderer_.scene().reflectors.size());
   const std::vector<std::uint16_t> material = renderer_.read_material();
   const RgbaImageF normal_rough = renderer_.read_texture(renderer_.gbuffer().normal_roughness);
+  const RgbaImageF glass = renderer_.read_texture(renderer_.gbuffer().glass_surface);
   const std::size_t n = labels_.classes.size();
+  labels_.glass.resize(n);
   labels_.reflector.resize(n);
   labels_.roughness.resize(n);
   normal_mapped_.resize(n);
@@ -70,6 +74,7 @@ ScoredFrame::ScoredFrame(Renderer& renderer, const Camera& camera, Technique& re
     labels_.reflector[i] = material[i * 4];
     labels_.roughness[i] = std::clamp(normal_rough.pixels[i * 4 + 3], 0.0f, 1.0f);
     normal_mapped_[i] = (material[i * 4 + 2] & MATERIAL_FLAG_NORMAL_MAPPED) != 0;
+    labels_.glass[i] = glass.pixels[i * 4 + 3] >= 1.0f;
   }
   inherent_psnr_ = psnr_from_rmse(rmse_where(ideal_, truth_, labels_.classes, [](PixelClass c) {
     return c != PixelClass::NotReflective;
@@ -98,7 +103,7 @@ ReferenceImages ScoredFrame::references(int samples) {
     to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + 7919) % 1000000));
     ref->load(renderer_.shaders());
     renderer_.run_technique(*ref, nullptr);
-    put_reflection(renderer_, *reference_outputs(*ref).ideal);
+    put_ideal(renderer_, reference_outputs(*ref));
     it = ideal_at_samples_.emplace(samples, display_of(ViewMode::Final)).first;
   }
   r.ideal_at_samples = &it->second;
@@ -120,11 +125,14 @@ ScoredFrame::Score ScoredFrame::score(Technique& t) {
   s.reflection = renderer_.read_texture(renderer_.reflection());
   s.display = display_of(ViewMode::Final);
   s.reflected = display_of(ViewMode::Reflected);
+  // Glass pixels show the refraction: their claim is the refraction's confidence.
+  const RgbaImageF refraction = renderer_.read_texture(renderer_.refraction());
   s.confidence.resize(s.reflection.pixels.size() / 4);
-  for (std::size_t i = 0; i < s.confidence.size(); ++i) s.confidence[i] = s.reflection.pixels[i * 4 + 3];
+  for (std::size_t i = 0; i < s.confidence.size(); ++i)
+    s.confidence[i] = (labels_.is_glass(i) ? refraction : s.reflection).pixels[i * 4 + 3];
   s.error = compute_metrics(s.display, truth_, ideal_, labels_.classes, s.confidence);
   // Non-finite values anywhere in the technique's output count, not only where metrics look.
-  s.error.nonfinite = count_nonfinite(s.reflection.pixels) +
+  s.error.nonfinite = count_nonfinite(s.reflection.pixels) + count_nonfinite(refraction.pixels) +
                       count_nonfinite(renderer_.read_texture(renderer_.color()).pixels);
   s.breakdown = compute_breakdown(labels_, {&s.display, &s.reflected, &s.confidence}, refs,
                                   technique_info(t.name()).planar_only);

@@ -48,14 +48,14 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
 
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override;
 
-  ReferenceOutputs outputs() const { return {&ideal_, &classes_, rays_}; }
+  ReferenceOutputs outputs() const { return {&ideal_, &ideal_refraction_, &classes_, rays_}; }
   std::function<void(double)> progress;
 
  private:
   gl::Program program_;
   std::uint64_t bvh_scene_ = 0;  // Renderer::scene_id() the BVH was built for
   std::unique_ptr<EmbreeScene> bvh_;
-  gl::Texture2D ideal_;
+  gl::Texture2D ideal_, ideal_refraction_;
   std::vector<PixelClass> classes_;
   std::size_t rays_ = 0;
 };
@@ -106,6 +106,26 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   auto view_z_at = [&](int x, int y) {  // view-space z of the depth buffer; +inf for background
     const double d = depth[static_cast<std::size_t>(y) * w + x];
     return d <= 0.0 ? std::numeric_limits<double>::infinity() : -proj_b / (d + proj_a);
+  };
+
+  // Traceable: the hit projects on screen, and the pixel there shows the same object at the
+  // hit's depth. Depth alone is not enough: where an object stands on a mirror, the floor in
+  // front of its base is within the tolerance of the base's depth, and the screen-space ideal
+  // would read the floor. `own_reflector` (a mesh index, or -1) is never its own reflection.
+  // `hp` gets the hit's pixel (GL convention).
+  auto visible_on_screen = [&](const RayHit& hit, int own_reflector, glm::vec2& hp) {
+    const glm::dvec4 clip = view_proj * glm::dvec4(glm::dvec3(hit.position), 1.0);
+    if (clip.w <= 1e-9) return false;
+    const glm::dvec2 uv = glm::dvec2(clip) / clip.w * 0.5 + 0.5;
+    if (!(uv.x >= 0 && uv.x < 1 && uv.y >= 0 && uv.y < 1)) return false;
+    const int hx = std::min(static_cast<int>(uv.x * w), w - 1);
+    const int hy = std::min(static_cast<int>(uv.y * h), h - 1);
+    hp = glm::vec2(hx, hy);
+    const double z_hit = (view * glm::dvec4(glm::dvec3(hit.position), 1.0)).z;
+    const std::size_t j = static_cast<std::size_t>(hy) * w + hx;
+    const bool same_object = depth[j] > 0.0f && material[j * 4 + 3] == hit.mesh;
+    return same_object && hit.mesh != own_reflector &&
+           std::abs(view_z_at(hx, hy) - z_hit) <= params_.depth_tolerance * std::abs(z_hit) + 1e-4;
   };
 
   // --- per pixel: its samples -------------------------------------------------------------------
@@ -245,29 +265,8 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           const double footprint = width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
                                    static_cast<double>(hit.uv_density);
           s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
-          // Traceable: the hit projects on screen, and the pixel there shows the same object at
-          // the hit's depth. Depth alone is not enough: where an object stands on a mirror, the
-          // floor in front of its base is within the tolerance of the base's depth, and the
-          // screen-space ideal would read the floor. The pixel's own reflector is never its
-          // own reflection.
-          const glm::dvec4 clip = view_proj * glm::dvec4(glm::dvec3(hit.position), 1.0);
-          bool visible = false;
           glm::vec2 hp(0);
-          if (clip.w > 1e-9) {
-            const glm::dvec2 uv = glm::dvec2(clip) / clip.w * 0.5 + 0.5;
-            if (uv.x >= 0 && uv.x < 1 && uv.y >= 0 && uv.y < 1) {
-              const int hx = std::min(static_cast<int>(uv.x * w), w - 1);
-              const int hy = std::min(static_cast<int>(uv.y * h), h - 1);
-              const double z_hit = (view * glm::dvec4(glm::dvec3(hit.position), 1.0)).z;
-              const double z_buf = view_z_at(hx, hy);
-              const std::size_t j = static_cast<std::size_t>(hy) * w + hx;
-              const bool same_object = depth[j] > 0.0f && material[j * 4 + 3] == hit.mesh;
-              const bool own_reflector = material[i * 4] > 0 && hit.mesh == material[i * 4 + 3];
-              visible = same_object && !own_reflector &&
-                        std::abs(z_buf - z_hit) <= params_.depth_tolerance * std::abs(z_hit) + 1e-4;
-              hp = glm::vec2(hx, hy);
-            }
-          }
+          const bool visible = visible_on_screen(hit, material[i * 4] > 0 ? material[i * 4 + 3] : -1, hp);
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
           (visible ? traceable : missing)++;
@@ -316,6 +315,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   glBindImageTexture(IMG_REF_TRUTH, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(IMG_REF_IDEAL, ideal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glUseProgram(program_.id());
+  glProgramUniform1i(program_.id(), 1, static_cast<int>(bounces));
 
   std::vector<shared::ReferencePixel> pixels;
   while (batch_y1 < h) {
@@ -356,10 +356,94 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
     glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
-    glProgramUniform1i(program_.id(), 1, static_cast<int>(bounces));
     glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glFinish();  // the batch's buffers die at the end of this scope
+  }
+
+  // --- refraction through transparent surfaces, with the tracers' thin-surface model ----------
+  // The view ray bends once at the nearest transparent surface (refract with 1/ior; total
+  // internal reflection reflects) and goes on straight to the opaque scene behind it (glass is
+  // not in the BVH). Truth: the hit shaded from the ray, or the environment. Ideal: the lit
+  // colour at the hit's pixel where a screen-space tracer could find it there, else confidence
+  // 0, so that the composite shows the unbent background as it does for a tracer that finds
+  // nothing. The pixel's class becomes its refraction's: glass covers its reflection.
+  if (ideal_refraction_.width() != w || ideal_refraction_.height() != h)
+    ideal_refraction_ = gl::Texture2D("reference ideal refraction", GL_RGBA16F, w, h);
+  glClearTexImage(ideal_refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  if (in.renderer.gpu_scene().has_transparent()) {
+    std::vector<float> glass_depth(npx), glass_surface(npx * 4);
+    glGetTextureImage(in.gbuffer.glass_depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      static_cast<GLsizei>(npx * sizeof(float)), glass_depth.data());
+    glGetTextureImage(in.gbuffer.glass_surface.id(), 0, GL_RGBA, GL_FLOAT,
+                      static_cast<GLsizei>(npx * 4 * sizeof(float)), glass_surface.data());
+    pixels.clear();
+    for (std::size_t i = 0; i < npx; ++i)
+      if (glass_surface[i * 4 + 3] >= 1.0f)
+        pixels.push_back({glm::ivec4(static_cast<int>(i % static_cast<std::size_t>(w)),
+                                     static_cast<int>(i / static_cast<std::size_t>(w)),
+                                     static_cast<int>(pixels.size()), 1)});
+    samples.assign(pixels.size() * bounces, unused_segment());
+    std::atomic<std::size_t> next{0};
+    auto glass_worker = [&] {
+      for (std::size_t g; (g = next.fetch_add(1)) < pixels.size();) {
+        const int x = pixels[g].data.x, y = pixels[g].data.y;
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        const glm::dvec4 ndc((x + 0.5) / w * 2 - 1, (y + 0.5) / h * 2 - 1, glass_depth[i], 1.0);
+        glm::dvec4 pv = inv_proj * ndc;
+        pv /= pv.w;
+        const glm::vec3 d = glm::normalize(glm::vec3(pv));
+        const glm::vec3 n = glm::normalize(glm::vec3(glass_surface[i * 4], glass_surface[i * 4 + 1], glass_surface[i * 4 + 2]));
+        glm::vec3 dir_vs = glm::refract(d, n, 1.0f / glass_surface[i * 4 + 3]);
+        if (glm::dot(dir_vs, dir_vs) < 1e-6f) dir_vs = glm::reflect(d, n);
+        const glm::vec3 dir = glm::normalize(glm::vec3(glm::dmat3(inv_view) * glm::dvec3(dir_vs)));
+        const glm::dvec3 p_ws = glm::dvec3(inv_view * pv);
+        const double cam_dist = glm::length(glm::dvec3(pv));
+        shared::ReferenceSample& s = samples[g * bounces];
+        s.direction = glm::vec4(dir, 0.0f);
+        const RayHit hit = bvh_->trace(glm::vec3(p_ws), dir);
+        PixelClass c = PixelClass::Sky;
+        if (!hit.hit) {
+          s.position = glm::vec4(0, 0, 0, -1);
+        } else {
+          s.position = glm::vec4(hit.position, static_cast<float>(scene.meshes[static_cast<std::size_t>(hit.mesh)].material));
+          const double footprint = pixel_angle * (cam_dist + hit.t) / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
+                                   static_cast<double>(hit.uv_density);
+          s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+          glm::vec2 hp(0);
+          const bool visible = visible_on_screen(hit, -1, hp);
+          s.direction.w = visible ? 1.0f : 0.0f;
+          s.hit_pixel = glm::vec4(hp, hit.uv);
+          c = visible ? PixelClass::Traceable : PixelClass::Missing;
+          if (bounces > 1)
+            follow_bounces(hit, dir, cam_dist + hit.t, &samples[g * bounces], static_cast<unsigned>(x),
+                           static_cast<unsigned>(y), 0u);
+        }
+        cls[i] = static_cast<std::uint8_t>(c);
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(glass_worker);
+    for (auto& t : pool) t.join();
+    rays_ += pixels.size();
+    if (!pixels.empty()) {
+      gl::Buffer sbuf = gl::make_buffer("reference refraction samples",
+                                        static_cast<GLsizeiptr>(samples.size() * sizeof(shared::ReferenceSample)),
+                                        samples.data(), 0);
+      gl::Buffer pbuf = gl::make_buffer("reference refraction pixels",
+                                        static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
+                                        pixels.data(), 0);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
+      glBindImageTexture(IMG_REF_TRUTH, in.renderer.refraction().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(IMG_REF_IDEAL, ideal_refraction_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
+      glProgramUniform1i(program_.id(), 2, 1);
+      glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
+      glProgramUniform1i(program_.id(), 2, 0);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      glFinish();
+    }
   }
 
   // Classes, flipped to row 0 = top like every read-back image.

@@ -25,6 +25,7 @@ std::unique_ptr<Technique> make_reference_technique();
 // The extra outputs of the last run of a reference technique (nullptr for other techniques).
 struct ReferenceOutputs {
   const gl::Texture2D* ideal = nullptr;     // RGBA16F screen-space ideal reflection
+  const gl::Texture2D* ideal_refraction = nullptr;  // RGBA16F ideal refraction (glass pixels)
   const std::vector<PixelClass>* classes = nullptr;  // row 0 = top, as read-back images
   std::size_t rays = 0;                     // rays traced in the last run
 };

@@ -238,11 +238,9 @@ void Renderer::run_technique(Technique& technique, gl::PassTimer* timer) {
     gl::ScopedPass pass(timer, "backfaces");
     render_backfaces();
   }
-  if (!technique.writes_debug()) {  // tracers write debug and refraction; others leave them blank
-    const float zero[4] = {0, 0, 0, 0};
-    glClearTexImage(debug_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    glClearTexImage(refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-  }
+  const float zero[4] = {0, 0, 0, 0};
+  if (!technique.writes_debug()) glClearTexImage(debug_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  if (!technique.writes_refraction()) glClearTexImage(refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   blend_ = technique.composite_blend();
   bind_frame_inputs();
   glBindImageTexture(IMG_OUT2, debug_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);

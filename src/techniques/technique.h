@@ -49,7 +49,10 @@ class Technique {
 
   // What the renderer must provide or do around run().
   virtual bool needs_backfaces() const { return false; }  // back-face depth at TEX_BACK_DEPTH
-  virtual bool writes_debug() const { return false; }     // else the debug image is cleared
+  // The outputs besides the reflection that the technique writes; the frame clears the others
+  // before run(), so that no technique reads or shows another's stale image.
+  virtual bool writes_debug() const { return false; }       // steps, hit share, distance (IMG_OUT2)
+  virtual bool writes_refraction() const { return false; }  // glass pixels' refraction (IMG_REFRACTION)
   virtual int composite_blend() const { return 0; }       // 0 standard, 1 Roberts (mix(lit, refl, a))
 };
 

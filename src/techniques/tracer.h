@@ -26,6 +26,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
 
   bool needs_backfaces() const override { return this->params_.ray.backface_thickness != 0; }
   bool writes_debug() const override { return true; }
+  bool writes_refraction() const override { return true; }
   int composite_blend() const override { return this->params_.ray.blend; }
 
  protected:

@@ -239,3 +239,69 @@ TEST(Verdicts, MultiBounceTruthBetweenFacingMirrors) {
   EXPECT_GT(lit_counts.back(), lit_counts.front() + 96u * 64u / 4u);
   test::expect_no_gl_errors();
 }
+
+// The truth refracts with the tracers' single-interface model: a view ray meets a tilted glass
+// plane (ior 1.5), bends once by Snell's law and goes on straight to a wall whose left half is
+// red and right half green. Where the refracted ray lands, computed analytically, decides each
+// glass pixel's colour in the truth; the unbent ray would decide otherwise on a band of pixels.
+TEST(Verdicts, GlassTruthFollowsAnalyticRefraction) {
+  Scene s;
+  s.name = "glass-plane";
+  Material glass = material(glm::vec3(1.0f), 0.0f, 0.0f, 0.5f);
+  glass.transparent = true;
+  glass.ior = 1.5f;
+  s.materials = {material({0.8f, 0.05f, 0.05f}, 0.9f, 0.0f, 0.0f), material({0.05f, 0.8f, 0.05f}, 0.9f, 0.0f, 0.0f), glass};
+  const glm::mat4 face_z = glm::rotate(glm::mat4(1.0f), 1.5707964f, glm::vec3(1, 0, 0));  // +Y -> +Z
+  add_mesh(s, meshgen::plane({4.0f, 6.0f}), "wall_red", 0, glm::translate(glm::mat4(1.0f), {-2.0f, 0.0f, -4.0f}) * face_z);
+  add_mesh(s, meshgen::plane({4.0f, 6.0f}), "wall_green", 1, glm::translate(glm::mat4(1.0f), {2.0f, 0.0f, -4.0f}) * face_z);
+  const float tilt = glm::radians(35.0f);
+  const glm::vec3 center(0.0f, 0.0f, -1.0f);
+  add_mesh(s, meshgen::plane({2.4f, 2.4f}), "glass", 2,
+           glm::translate(glm::mat4(1.0f), center) * glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(0, 1, 0)) * face_z);
+  Light l;
+  l.position = {0.0f, 1.0f, 1.0f};
+  l.intensity = 20.0f;
+  l.range = 30.0f;
+  s.lights.push_back(l);
+  Camera c;
+  c.name = "front";
+  c.position = {0.0f, 0.0f, 2.0f};
+  c.target = {0.0f, 0.0f, -10.0f};
+  c.fov_y_deg = 60.0f;
+  s.cameras.push_back(c);
+  validate(s);
+
+  const int w = 160, h = 120;
+  Renderer r(s, w, h);
+  auto reference = create_technique("reference");
+  reference->load(r.shaders());
+  ScoredFrame frame(r, s.cameras[0], *reference);
+  const glm::vec3 n(std::sin(tilt), 0.0f, std::cos(tilt));  // faces the camera
+  const float tan_half = std::tan(glm::radians(c.fov_y_deg) * 0.5f);
+  std::size_t glass_px = 0, decided = 0, agree = 0, bent_differs = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      if (!frame.labels().is_glass(i)) continue;
+      ++glass_px;
+      const float ndc_x = (x + 0.5f) / w * 2.0f - 1.0f, ndc_y = 1.0f - (y + 0.5f) / h * 2.0f;
+      const glm::vec3 d = glm::normalize(glm::vec3(ndc_x * tan_half * w / h, ndc_y * tan_half, -1.0f));
+      const glm::vec3 p = c.position + d * (glm::dot(center - c.position, n) / glm::dot(d, n));
+      const glm::vec3 t = glm::refract(d, n, 1.0f / 1.5f);
+      const float x_bent = p.x + t.x * ((-4.0f - p.z) / t.z);
+      const float x_straight = c.position.x + d.x * ((-4.0f - c.position.z) / d.z);
+      if (std::abs(x_bent) < 0.05f || std::abs(x_bent) > 3.9f) continue;  // the edge between the halves
+      ++decided;
+      const float* truth = &frame.truth_reflected().pixels[i * 4];
+      agree += (truth[0] > truth[1]) == (x_bent < 0.0f);
+      bent_differs += (x_bent < 0.0f) != (x_straight < 0.0f);
+      EXPECT_EQ(frame.classes()[i], PixelClass::Traceable) << x << "," << y;
+    }
+  std::printf("glass plane: %zu glass pixels, %zu decided, %zu agree with Snell, %zu where the unbent ray "
+              "sees the other half\n", glass_px, decided, agree, bent_differs);
+  EXPECT_GT(glass_px, 2000u);
+  EXPECT_GT(decided, glass_px * 9 / 10);
+  EXPECT_EQ(agree, decided);
+  EXPECT_GT(bent_differs, 100u);
+  test::expect_no_gl_errors();
+}

@@ -50,7 +50,7 @@ TEST(Breakdown, RegionsCoverTheirPixels) {
   std::vector<std::string> names;
   for (const Region& r : frame_regions(l)) names.push_back(r.name());
   EXPECT_EQ(names, (std::vector<std::string>{"all", "planar", "reflector:1", "reflector:2", "other",
-                                             "mirror", "glossy", "rough"}));
+                                             "mirror", "glossy", "rough", "refractive"}));
   auto count = [&](const std::string& name) {
     const Region r = parse_region(name, l.reflectors);
     int n = 0;
