@@ -20,7 +20,7 @@ layout(location = 1) uniform int u_bounces;  // segments a sample
 layout(location = 2) uniform int u_ideal_traceable_only;
 
 // Sampler arrays may only be indexed by constant expressions in GLSL 4.50: one branch per slot.
-vec3 albedo_map(int slot, vec2 uv, float lod_uv) {
+vec3 texture_map(int slot, vec2 uv, float lod_uv) {
   vec3 c = vec3(1.0);
 #define SSR_MAP_CASE(i) \
   if (slot == i) c = textureLod(albedo_maps[i], uv, lod_uv + log2(float(textureSize(albedo_maps[i], 0).x))).rgb;
@@ -36,7 +36,24 @@ Surface surface_of(ReferenceSample s) {
   surf.n_ws = s.normal.xyz;
   surf.albedo = mat.albedo_metallic.rgb;
   int slot = int(mat.params.z);
-  if (slot >= 0) surf.albedo *= albedo_map(slot, s.hit_pixel.zw, s.normal.w);
+  if (slot >= 0) surf.albedo *= texture_map(slot, s.hit_pixel.zw, s.normal.w);
+  // The normal map, as the G-buffer pass applies it (so that the truth of a normal-mapped
+  // surface seen in a mirror is shaded like the surface seen directly).
+  int normal_slot = int(mat.params.w);
+  if (normal_slot >= 0) {
+    vec3 n = surf.n_ws;
+    vec3 t = s.tangent.xyz - n * dot(n, s.tangent.xyz);
+    float tl = length(t);
+    if (tl > 1e-8) {
+      t /= tl;
+      vec3 b = cross(n, t) * (s.tangent.w < 0.0 ? -1.0 : 1.0);
+      vec3 m = texture_map(normal_slot, s.hit_pixel.zw, s.normal.w) * 2.0 - 1.0;
+      m.xy *= mat.emission.w;
+      vec3 pn = t * m.x + b * m.y + n * max(m.z, 0.0);
+      float pl = length(pn);
+      if (pl > 1e-6) surf.n_ws = pn / pl;
+    }
+  }
   surf.metallic = mat.albedo_metallic.a;
   surf.roughness = mat.params.x;
   surf.reflectance = mat.params.y;

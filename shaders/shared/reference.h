@@ -5,7 +5,7 @@
 
 SSR_SHARED_BEGIN
 
-#define REFERENCE_MAX_TEXTURES 8  // albedo maps the shading pass can sample (texture units)
+#define REFERENCE_MAX_TEXTURES 8  // albedo and normal maps the shading pass can sample (texture units)
 #define SSBO_REF_SAMPLES 1
 #define SSBO_REF_PIXELS 2
 #define SSBO_REF_MATERIALS 3
@@ -24,6 +24,7 @@ struct ReferenceSample {
                    //      is traceable (visible on screen), else 0
   vec4 hit_pixel;  // xy: the hit's pixel (GL convention, for the screen-space ideal; segment 0
                    //      only); zw: uv
+  vec4 tangent;    // xyz: world tangent along +u at the hit (for normal maps); w: handedness
 };
 
 struct ReferencePixel {
@@ -32,8 +33,8 @@ struct ReferencePixel {
 
 struct ReferenceMaterial {
   vec4 albedo_metallic;  // linear albedo, metallic
-  vec4 params;           // roughness, reflectance, albedo texture slot (-1: none), unused
-  vec4 emission;         // linear rgb
+  vec4 params;           // roughness, reflectance, albedo texture slot, normal map slot (-1: none)
+  vec4 emission;         // linear rgb, normal map strength
 };
 
 SSR_SHARED_END

@@ -245,8 +245,24 @@ OracleAgreement compare_oracles(const PixelLabels& labels, const RgbaImageF& pla
   check_size(&truth_reflected, labels, "truth reflected");
   if (eligible.size() != labels.classes.size())
     throw std::invalid_argument("breakdown: the eligibility mask does not match the frame's size.");
-  Accum acc;
-  std::size_t within = 0;
+  auto on_edge = [&](std::size_t i) {
+    const int x = static_cast<int>(i % static_cast<std::size_t>(labels.width));
+    const int y = static_cast<int>(i / static_cast<std::size_t>(labels.width));
+    for (int c = 0; c < 3; ++c) {
+      float lo = 1e30f, hi = -1e30f;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = std::clamp(x + dx, 0, labels.width - 1), ny = std::clamp(y + dy, 0, labels.height - 1);
+          const float v = truth_reflected.at(nx, ny)[c];
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+      if (!(hi - lo <= kOracleEdgeContrast)) return true;
+    }
+    return false;
+  };
+  Accum acc, off_edges;
+  std::size_t within = 0, edges = 0;
   for (std::size_t i = 0; i < labels.classes.size(); ++i) {
     if (labels.classes[i] == PixelClass::NotReflective || labels.reflector[i] == 0 || labels.is_glass(i) || !eligible[i] ||
         !(labels.roughness[i] < max_roughness))
@@ -254,11 +270,19 @@ OracleAgreement compare_oracles(const PixelLabels& labels, const RgbaImageF& pla
     const float* a = px(&planar_reflected, i);
     const float* b = px(&truth_reflected, i);
     acc.add(a, b);
+    if (on_edge(i)) ++edges;
+    else off_edges.add(a, b);
     bool ok = true;
     for (int c = 0; c < 3; ++c) ok = ok && std::abs(a[c] - b[c]) <= 1.0f / 255.0f;
     within += ok;
   }
-  return {acc.n, acc.psnr(), share(within, acc.n)};
+  OracleAgreement o;
+  o.pixels = acc.n;
+  o.psnr = acc.psnr();
+  o.within_1_255 = share(within, acc.n);
+  o.edge_pixels = edges;
+  o.psnr_off_edges = off_edges.psnr();
+  return o;
 }
 
 }  // namespace ssr

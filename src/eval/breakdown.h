@@ -140,7 +140,13 @@ InherentFigures compute_inherent(const PixelLabels& labels, const ReferenceImage
 struct OracleAgreement {
   std::size_t pixels = 0;
   std::optional<double> psnr, within_1_255;
+  // The PSNR off edges: without the pixels whose 3x3 neighbourhood in the truth spans more than
+  // kOracleEdgeContrast in some channel (reflected silhouettes and sharp edges, where a raster
+  // and a ray tracer legitimately disagree on which surface a pixel centre sees).
+  std::size_t edge_pixels = 0;
+  std::optional<double> psnr_off_edges;
 };
+constexpr float kOracleEdgeContrast = 0.1f;
 OracleAgreement compare_oracles(const PixelLabels& labels, const RgbaImageF& planar_reflected,
                                 const RgbaImageF& truth_reflected, const std::vector<bool>& eligible,
                                 float max_roughness = 0.01f);

@@ -103,7 +103,9 @@ nlohmann::json run_json(const RunResults& run) {
   };
   if (run.oracles)
     j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", opt(run.oracles->psnr)},
-                    {"within_1_255", opt(run.oracles->within_1_255)}};
+                    {"within_1_255", opt(run.oracles->within_1_255)},
+                    {"edge_pixels", run.oracles->edge_pixels},
+                    {"psnr_off_edges", opt(run.oracles->psnr_off_edges)}};
   return j;
 }
 
@@ -333,8 +335,9 @@ std::string results_table(const RunResults& run, const std::string& clock) {
          "with the right colour; n/a: not handled.\n";
   if (run.oracles)
     out += "oracles (planar vs reference, mirror reflector pixels): " + db_text(run.oracles->psnr) +
-           " dB, " + percent_text(run.oracles->within_1_255) + " within 1/255 (" +
-           std::to_string(run.oracles->pixels) + " pixels)\n";
+           " dB, " + percent_text(run.oracles->within_1_255) + " within 1/255, " +
+           db_text(run.oracles->psnr_off_edges) + " dB off " + std::to_string(run.oracles->edge_pixels) +
+           " edge pixels (" + std::to_string(run.oracles->pixels) + " pixels)\n";
   return out;
 }
 

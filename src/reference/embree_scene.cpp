@@ -97,6 +97,7 @@ RayHit EmbreeScene::trace(const glm::vec3& origin, const glm::vec3& dir, float t
   hit.mesh = static_cast<int>(rh.hit.geomID);
   hit.position = w * a.position + u * b.position + v * c.position;
   hit.uv = w * a.uv + u * b.uv + v * c.uv;
+  hit.tangent = glm::vec4(glm::vec3(w * a.tangent + u * b.tangent + v * c.tangent), a.tangent.w < 0.0f ? -1.0f : 1.0f);
   // Two-sided like the G-buffer: the front face is counter-clockwise seen from the viewer.
   glm::vec3 ng = glm::cross(b.position - a.position, c.position - a.position);
   const float ng_len = glm::length(ng);

@@ -16,6 +16,7 @@ struct RayHit {
   glm::vec3 position{0};    // world
   glm::vec3 normal{0};      // unit shading normal (interpolated), turned to face the ray
   glm::vec2 uv{0};
+  glm::vec4 tangent{0};     // xyz interpolated tangent along +u (not normalised), w handedness
   float cos_incidence = 1;  // |dot(geometric normal, ray direction)|
   float uv_density = 0;     // uv units per world unit on the hit triangle (texture LOD)
 };

@@ -186,6 +186,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
                                static_cast<double>(nh.uv_density);
       s.normal = glm::vec4(nh.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
       s.hit_pixel = glm::vec4(0, 0, nh.uv);
+      s.tangent = nh.tangent;
       hit = nh;
       dir = next;
     }
@@ -269,6 +270,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           const bool visible = visible_on_screen(hit, material[i * 4] > 0 ? material[i * 4 + 3] : -1, hp);
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
+          s.tangent = hit.tangent;
           (visible ? traceable : missing)++;
           if (bounces > 1)
             follow_bounces(hit, dir, cam_dist + hit.t, &samples[first_segment], static_cast<unsigned>(x),
@@ -283,24 +285,27 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   };
   // --- GPU shading of the hits, in batches ------------------------------------------------------
   std::vector<shared::ReferenceMaterial> mats;
-  std::vector<int> slot_of_image(scene.images.size(), -1);
+  // Texture slots: an image is uploaded twice, as sRGB albedo and as linear normal map.
+  std::vector<int> albedo_slot(scene.images.size(), -1), normal_slot(scene.images.size(), -1);
   std::vector<GLuint> slot_textures;
-  for (const Material& mt : scene.materials) {
-    int slot = -1;
-    if (mt.albedo_texture >= 0) {
-      int& s = slot_of_image[static_cast<std::size_t>(mt.albedo_texture)];
-      if (s < 0) {
-        if (slot_textures.size() >= REFERENCE_MAX_TEXTURES)
-          throw RuntimeError("the reference shades at most " + std::to_string(REFERENCE_MAX_TEXTURES) +
-                             " albedo textures; this scene has more.");
-        s = static_cast<int>(slot_textures.size());
-        slot_textures.push_back(in.renderer.gpu_scene().albedo_texture(mt.albedo_texture));
-      }
-      slot = s;
+  auto slot_for = [&](int image, bool normal) {
+    if (image < 0) return -1;
+    int& s = (normal ? normal_slot : albedo_slot)[static_cast<std::size_t>(image)];
+    if (s < 0) {
+      if (slot_textures.size() >= REFERENCE_MAX_TEXTURES)
+        throw RuntimeError("the reference shades at most " + std::to_string(REFERENCE_MAX_TEXTURES) +
+                           " albedo and normal maps; this scene has more.");
+      s = static_cast<int>(slot_textures.size());
+      slot_textures.push_back(normal ? in.renderer.gpu_scene().normal_texture(image)
+                                     : in.renderer.gpu_scene().albedo_texture(image));
     }
+    return s;
+  };
+  for (const Material& mt : scene.materials) {
+    const int albedo = slot_for(mt.albedo_texture, false), normal = slot_for(mt.normal_texture, true);
     mats.push_back({glm::vec4(mt.albedo, mt.metallic),
-                    glm::vec4(mt.roughness, mt.reflectance, static_cast<float>(slot), 0.0f),
-                    glm::vec4(mt.emission, 0.0f)});
+                    glm::vec4(mt.roughness, mt.reflectance, static_cast<float>(albedo), static_cast<float>(normal)),
+                    glm::vec4(mt.emission, mt.normal_strength)});
   }
   gl::Buffer mat_buf = gl::make_buffer("reference materials",
                                        static_cast<GLsizeiptr>(mats.size() * sizeof(mats[0])), mats.data(), 0);
@@ -414,6 +419,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
           const bool visible = visible_on_screen(hit, -1, hp);
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
+          s.tangent = hit.tangent;
           c = visible ? PixelClass::Traceable : PixelClass::Missing;
           if (bounces > 1)
             follow_bounces(hit, dir, cam_dist + hit.t, &samples[g * bounces], static_cast<unsigned>(x),

@@ -21,6 +21,7 @@ class GpuScene {
   int light_count() const { return light_count_; }
   // The albedo (sRGB, mip-mapped) texture of scene image i.
   GLuint albedo_texture(int image) const { return textures_[static_cast<std::size_t>(image)].id(); }
+  GLuint normal_texture(int image) const { return normal_textures_[static_cast<std::size_t>(image)].id(); }
 
  private:
   struct Draw {
