@@ -29,6 +29,8 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "eval/grid.h"
+#include "eval/metrics.h"
+#include "eval/runner.h"
 #include "gl/context.h"
 #include "reference/reference.h"
 #include "render/image_io.h"
@@ -71,6 +73,7 @@ bool on_demand(const Technique& t) { return t.name() == "reference"; }
 struct Side {
   std::unique_ptr<Technique> technique;
   gl::Texture2D copy;       // RGBA8 display image of the last frame it ran
+  RgbaImageF values;        // its final image as display values (final view only; else empty)
   bool valid = false;       // `copy` holds an image of the current size
   std::string shown_key;    // the frame key of what `copy` shows
   int request = 0;          // on-demand: 2 = asked (UI shows "computing..."), 1 = run this frame
@@ -104,19 +107,6 @@ RgbaImage8 read_rgba8(const gl::Texture2D& tex) {
                      im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y + 1)),
                      im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(h - 1 - y)));
   return im;
-}
-
-// PSNR (dB) of two RGBA8 images over RGB, values in [0,1]; infinity when equal.
-double psnr8(const RgbaImage8& a, const RgbaImage8& b) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i + 3 < a.pixels.size() && i + 3 < b.pixels.size(); i += 4)
-    for (std::size_t c = 0; c < 3; ++c, ++n) {
-      const double d = (double(a.pixels[i + c]) - double(b.pixels[i + c])) / 255.0;
-      sum += d * d;
-    }
-  if (n == 0 || sum == 0) return INFINITY;
-  return 10.0 * std::log10(1.0 / (sum / static_cast<double>(n)));
 }
 
 // Orbit camera state kept as spherical coordinates around the target.
@@ -238,6 +228,7 @@ class Viewer {
   std::string status_;
   bool status_error_ = false;
   std::string psnr_key_;
+  std::vector<bool> reflective_;  // the frame's reflective pixels (row 0 = top)
   double psnr_ = 0;
   bool psnr_valid_ = false;
   glm::dvec2 last_mouse_{0};
@@ -707,9 +698,12 @@ void Viewer::draw_ui(double dt) {
     }
     if (compare_ != CompareOff) {
       if (sides_[0].request > 0 || sides_[1].request > 0) ImGui::Text("PSNR A vs B: computing...");
-      else if (!psnr_valid_) ImGui::TextDisabled("PSNR A vs B: -");
-      else if (std::isinf(psnr_)) ImGui::Text("PSNR A vs B: identical");
+      else if (view_ != VIEW_FINAL) ImGui::TextDisabled("PSNR A vs B: in the final view only");
+      else if (!psnr_valid_) ImGui::TextDisabled("PSNR A vs B: - (no reflective pixels)");
+      else if (psnr_ >= kPsnrCap) ImGui::Text("PSNR A vs B: identical");
       else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
+      ImGui::TextDisabled("final image, reflective pixels, display values:");
+      ImGui::TextDisabled("compare's 'PSNR' when B is the reference");
     }
   }
   if (ImGui::CollapsingHeader("technique A", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(sides_[0], "A");
@@ -816,6 +810,11 @@ void Viewer::render() {
     renderer_->run_technique(*s.technique, s.timer.get());
     renderer_->composite_and_display(static_cast<ViewMode>(view_), s.timer.get());
     s.timer->end_frame();
+    // The figures come from the shared metric code over compare's pixels: the final image's
+    // display values on the reflective pixels.
+    s.values = view_ == VIEW_FINAL ? display_values(renderer_->read_texture(renderer_->color()), renderer_->settings.exposure)
+                                   : RgbaImageF{};
+    if (i == 0 || reflective_.size() != s.values.pixels.size() / 4) reflective_ = reflective_pixels(*renderer_);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
     glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0,
                        0, 0, fb_w_, fb_h_, 1);
@@ -854,8 +853,13 @@ void Viewer::render() {
   if (compare_ != CompareOff && sides_[0].valid && sides_[1].valid) {
     const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key;
     if (key != psnr_key_) {
-      psnr_ = psnr8(read_rgba8(sides_[0].copy), read_rgba8(sides_[1].copy));
-      psnr_valid_ = true;
+      const RgbaImageF& a = sides_[0].values;
+      const RgbaImageF& b = sides_[1].values;
+      const bool comparable = !a.pixels.empty() && a.pixels.size() == b.pixels.size() &&
+                              reflective_.size() * 4 == a.pixels.size();
+      const std::optional<double> p = comparable ? psnr_where(a, b, reflective_) : std::nullopt;
+      psnr_valid_ = p.has_value();
+      psnr_ = p.value_or(0.0);
       psnr_key_ = key;
     }
   } else if (compare_ != CompareOff) {

@@ -150,6 +150,22 @@ ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& trut
   return m;
 }
 
+std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask) {
+  check_same_size(a, "a", b, "b");
+  if (mask.size() != pixel_count(a))
+    throw std::invalid_argument("metrics: the mask has " + std::to_string(mask.size()) + " entries for " +
+                                std::to_string(pixel_count(a)) + " pixels.");
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    if (!mask[i]) continue;
+    sum += pixel_sq_error(a, b, i);
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return psnr_from_rmse(rmse_of(sum, count));
+}
+
 std::size_t count_nonfinite(const std::vector<float>& values) {
   std::size_t n = 0;
   for (float v : values) n += static_cast<std::size_t>(!std::isfinite(v));

@@ -2,6 +2,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/image.h"
@@ -42,5 +43,10 @@ ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& trut
                              const std::vector<float>& confidence);
 
 std::size_t count_nonfinite(const std::vector<float>& values);
+
+// PSNR of a vs b (display values) over the pixels where mask[i] holds; nullopt when none does.
+// The viewer's A-vs-B figure: over the reflective pixels of the final image it is compare's
+// `psnr` when B is the reference.
+std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask);
 
 }  // namespace ssr

@@ -232,6 +232,15 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
   return compare_oracles(frame.labels(), planar.reflected, frame.truth_reflected(), eligible);
 }
 
+std::vector<bool> reflective_pixels(const Renderer& r) {
+  const std::vector<std::uint16_t> material = r.read_material();
+  const std::vector<float> depth = r.read_depth();
+  std::vector<bool> out(depth.size());
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = depth[i] > 0.0f && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;
+  return out;
+}
+
 std::vector<std::pair<std::string, std::string>> param_list(Technique& t) {
   std::vector<std::pair<std::string, std::string>> out;
   ParamSet p = t.params();

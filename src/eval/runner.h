@@ -106,6 +106,10 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
 // pixels (DESIGN §5: the two oracles check each other).
 OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar);
 
+// The pixels that do reflection work in the renderer's current G-buffer (row 0 = top): the
+// pixels every pooled figure covers.
+std::vector<bool> reflective_pixels(const Renderer& r);
+
 // The parameters of a technique as key -> text, in table order (for results).
 std::vector<std::pair<std::string, std::string>> param_list(Technique& t);
 

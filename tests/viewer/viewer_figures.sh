@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The viewer's A-vs-B figure is compare's: with B = the reference, the PSNR the viewer prints for
+# hiz equals `ssrlab compare`'s PSNR of hiz on the same frame (same metric code, same pixels:
+# the final image's display values on the reflective pixels). Usage:
+# viewer_figures.sh SSRLAB_VIEW SSRLAB OUTDIR
+set -eu
+viewer=$1; ssrlab=$2; outdir=$3
+rm -rf "$outdir"; mkdir -p "$outdir"; cd "$outdir"
+command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (apt-get install xvfb)"; exit 1; }
+cat > run.txt <<'SCRIPT'
+technique hiz
+technique-b reference
+set reference.samples=4
+compare diff
+frames 2
+SCRIPT
+xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+  --script run.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+"$ssrlab" compare --scene gallery --size 320x180 --techniques hiz --set reference.samples=4 --frames 1 \
+  --out grid.png --json results.json > compare.txt 2>&1 || { cat compare.txt; exit 1; }
+python3 - <<'PY'
+import json, re
+log = open('log.txt').read()
+m = re.search(r'PSNR A vs B ([0-9.]+) dB', log)
+assert m, 'the viewer printed no PSNR:\n' + log
+viewer = float(m.group(1))
+cli = json.load(open('results.json'))['results'][0]['error']['psnr']
+print(f'hiz vs reference on gallery 320x180: viewer {viewer:.2f} dB, compare {cli:.2f} dB')
+assert abs(viewer - cli) <= 0.01, 'the viewer and compare disagree'
+PY
+echo "viewer figures ok"
