@@ -35,6 +35,7 @@ struct CompareOptions {
   int frames = 5;
   float exposure = 0.0f;
   bool breakdown = false;
+  std::string regions;  // --regions: the breakdown's rows
 };
 
 std::string fmt(const char* f, double v) {
@@ -49,6 +50,13 @@ int run_compare(const CompareOptions& o) {
   require_output_files({{"--out", o.out}, {"--json", o.json}});
   if (o.frames < 1 || o.frames > 1000) throw InputError("--frames must be in [1, 1000].");
   Scene scene = load_scene(o.scene);
+  std::vector<std::string> regions;
+  if (!o.regions.empty())
+    for (const std::string& name : split_list(o.regions, "region"))
+      regions.push_back(parse_region(name, static_cast<int>(scene.reflectors.size())).name());
+  const bool breakdown = o.breakdown || !regions.empty();
+  if (breakdown && !has_reflective_surfaces(scene, FrameSettings{}.reflective_f0))
+    throw InputError("--breakdown needs reflective pixels, and scene '" + scene.name + "' has no reflective surface.");
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   std::vector<std::string> names;
   if (o.techniques.empty()) {
@@ -69,10 +77,6 @@ int run_compare(const CompareOptions& o) {
   TimingOptions timing{1, o.frames, ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
 
   ScoredFrame frame(renderer, camera, *reference);
-  if (o.breakdown && std::none_of(frame.classes().begin(), frame.classes().end(),
-                                  [](PixelClass c) { return c != PixelClass::NotReflective; }))
-    throw InputError("--breakdown needs reflective pixels, and scene '" + scene.name +
-                     "' has none in this view.");
   FloorPass floor(renderer.shaders());
   const double floor_ms = floor.time(renderer, timing);
 
@@ -102,7 +106,7 @@ int run_compare(const CompareOptions& o) {
   if (!o.json.empty())
     write_text_file_atomic(o.json, to_json({gi.renderer, gi.version, clock}, build_revision(), run).dump(2) + "\n");
   std::printf("%s", results_table(run, clock).c_str());
-  if (o.breakdown) std::printf("\n%s", breakdown_table(run).c_str());
+  if (breakdown) std::printf("\n%s", breakdown_table(run, regions).c_str());
   std::printf("reference: %zu rays; grid %s%s%s\n", frame.reference_rays(), o.out.c_str(),
               o.json.empty() ? "" : ", results ", o.json.c_str());
   for (const TechniqueResult& r : run.results)
@@ -126,6 +130,8 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
+  c->add_option("--regions", o->regions,
+                "The breakdown's rows (implies --breakdown): all,planar,reflector:N,other,mirror,glossy,rough,refractive.");
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   return {c, [o] { return run_compare(*o); }};
 }

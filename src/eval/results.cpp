@@ -341,7 +341,7 @@ std::string results_table(const RunResults& run, const std::string& clock) {
   return out;
 }
 
-std::string breakdown_table(const RunResults& run) {
+std::string breakdown_table(const RunResults& run, const std::vector<std::string>& regions) {
   const std::vector<std::string> header = {
       "region", "pixels", "trace px", "vs truth", "vs ideal", "refl dB", "refl ideal", "cover",
       "correct", "noise floor", "missing px", "vs truth", "false", "sky px", "vs truth", "false"};
@@ -350,6 +350,7 @@ std::string breakdown_table(const RunResults& run) {
     std::vector<std::vector<std::string>> rows;
     for (const RegionFigures& f : r.breakdown.regions) {
       if (f.pixels == 0) continue;
+      if (!regions.empty() && std::find(regions.begin(), regions.end(), f.region.name()) == regions.end()) continue;
       std::string name = f.region.name();
       if (f.handled_pixels == 0) {
         rows.push_back({name, std::to_string(f.pixels), "not handled", "", "", "", "", "", "", "", "", "", "", "", "", ""});

@@ -75,8 +75,9 @@ std::string results_csv(const std::vector<RunResults>& runs);
 // ideal and the correct coverage.
 std::string results_table(const RunResults& run, const std::string& clock);
 
-// Every region x class of every technique of a run, one block per technique (--breakdown).
-std::string breakdown_table(const RunResults& run);
+// Every region x class of every technique of a run, one block per technique (--breakdown);
+// `regions` (names as Region::name() gives them) keeps only those rows, empty keeps all.
+std::string breakdown_table(const RunResults& run, const std::vector<std::string>& regions = {});
 
 // The "regions" object of one result (README: results JSON).
 nlohmann::json breakdown_json(const Breakdown& b);

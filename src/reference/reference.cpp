@@ -152,8 +152,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   const std::size_t bounces = static_cast<std::size_t>(params_.bounces);
   std::vector<bool> reflective_mesh(scene.meshes.size());
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const Material& mt = scene.materials[static_cast<std::size_t>(scene.meshes[m].material)];
-    const glm::vec3 f0 = glm::mix(glm::vec3(0.16f * mt.reflectance * mt.reflectance), mt.albedo, mt.metallic);
+    const glm::vec3 f0 = material_f0(scene.materials[static_cast<std::size_t>(scene.meshes[m].material)]);
     reflective_mesh[m] = scene.meshes[m].reflector > 0 ||
                          std::max({f0.x, f0.y, f0.z}) >= in.renderer.settings.reflective_f0;
   }

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -146,6 +147,19 @@ void validate(const Scene& s) {
         c.far_plane <= c.near_plane)
       fail(s, where + "needs 0 < near < far");
   }
+}
+
+glm::vec3 material_f0(const Material& m) {
+  return glm::mix(glm::vec3(0.16f * m.reflectance * m.reflectance), m.albedo, m.metallic);
+}
+
+bool has_reflective_surfaces(const Scene& scene, float reflective_f0) {
+  for (const Mesh& mesh : scene.meshes) {
+    const Material& m = scene.materials[static_cast<std::size_t>(mesh.material)];
+    const glm::vec3 f0 = material_f0(m);
+    if (mesh.reflector > 0 || m.transparent || std::max({f0.x, f0.y, f0.z}) >= reflective_f0) return true;
+  }
+  return false;
 }
 
 }  // namespace ssr

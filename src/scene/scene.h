@@ -111,6 +111,13 @@ struct Scene {
   std::size_t triangle_count() const;
 };
 
+// Specular reflectance at normal incidence (as shaders/common/brdf.glsl's f0_of).
+glm::vec3 material_f0(const Material& m);
+// Whether any surface of the scene can do reflection or refraction work: a planar reflector, a
+// material whose F0 reaches `reflective_f0` in some channel (as the G-buffer decides), or a
+// transparent material. Albedo maps only darken, so the material's own albedo decides.
+bool has_reflective_surfaces(const Scene& scene, float reflective_f0);
+
 // Checks every invariant above (indices in range, finite values, ranges, unit vectors, counts)
 // and throws InputError with one sentence naming the first problem. Loaders call it last.
 void validate(const Scene& scene);

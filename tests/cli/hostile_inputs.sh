@@ -107,6 +107,15 @@ bad variants bench --techniques linear --sweep linear.max_steps=$v --sweep linea
 bad scenes bench --scenes "$(printf 'gallery,%.0s' $(seq 1000))gallery" --json "$out/b.json"
 bad sizes bench --sizes "$(printf '64x36,%.0s' $(seq 1000))64x36" --json "$out/b.json"
 
+# ---- the verdict's options ---------------------------------------------------------------------
+bad "unknown region 'floor'" compare --regions planar,floor --size 32x18 --out "$out/x.png" --json "$out/r.json"
+bad "reflector:3" compare --regions reflector:3 --size 32x18 --out "$out/x.png"
+bad "reference.bounces" compare --set reference.bounces=9 --size 32x18 --out "$out/x.png"
+bad "reference.bounces" render --technique reference --set reference.bounces=0 --size 32x18 --out "$out/x.png"
+obj matte 'v -1 0 -3\nv 1 0 -3\nv 0 1 -3\nf 1 2 3\n'
+bad "reflective pixels" compare --scene "$in/matte.obj" --breakdown --size 32x18 --out "$out/x.png" --json "$out/r.json"
+bad "hit-classes" render --technique reference --view hit-classes --size 32x18 --out "$out/x.png"
+
 # ---- NaN / Inf / overflow ----------------------------------------------------------------------
 obj v_nan 'v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';       render_bad nan "$in/v_nan.obj"
 obj v_inf 'v 0 -inf 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n';      render_bad inf "$in/v_inf.obj"
