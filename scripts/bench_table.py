@@ -2,13 +2,16 @@
 """Markdown tables from `ssrlab bench --json` files, for docs/RESULTS.md.
 
     scripts/bench_table.py bench.json [more.json ...]
+    scripts/bench_table.py --regions [--defaults] bench.json [more.json ...]
 
 One table per (scene, size): technique, median/min/max ms, time over the floor pass, PSNR,
 PSNR traceable, coverage, non-finite count. Device, clock and revision come from each file.
 Then, per (scene, size), "speed at equal error": the error linear-binary reaches at its largest
 swept budget is the target; for each technique, the fastest variant whose PSNR traceable is
 within 0.25 dB of it (or better), and how many times faster than linear-binary's fastest such
-variant it is.
+variant it is. With --regions: per (scene, size), each technique's verdict per region (traceable
+PSNR against the ideal, correct coverage, false-hit rate on missing and sky pixels, noise floor),
+"n/a" where the technique does not handle the region, "-" for an empty set.
 """
 import json
 import sys
@@ -58,6 +61,54 @@ def main(paths):
             print()
 
 
+def pct(v):
+    return "-" if v is None else f"{v * 100:.1f}%"
+
+
+def db(v):
+    return "-" if v is None else fmt(v)
+
+
+REGION_COLUMNS = ["planar", "other", "mirror", "glossy", "rough", "refractive"]
+
+
+def region_cell(r, name):
+    f = r.get("regions", {}).get(name)
+    if f is None or f["pixels"] == 0:
+        return "-"
+    if f["handled_pixels"] == 0:
+        return "n/a"
+    t = f["traceable"]
+    claimed = [(c["false_hit_rate"], c["pixels"]) for c in (f["missing"], f["sky"]) if c["pixels"]]
+    false_rate = sum(rate * n for rate, n in claimed) / sum(n for _, n in claimed) if claimed else None
+    cell = f"{db(t['psnr_ideal'])} / {pct(t['correct_coverage'])} / {pct(false_rate)}"
+    if t.get("noise_floor_psnr") is not None:
+        cell += f" (floor {db(t['noise_floor_psnr'])})"
+    return cell
+
+
+def regions(paths, only_defaults=False):
+    """Per run: technique x region, 'PSNR vs ideal / correct coverage / false hits (noise floor)'."""
+    for path in paths:
+        for run in json.load(open(path))["runs"]:
+            present = [n for n in REGION_COLUMNS
+                       if any(r.get("regions", {}).get(n, {}).get("pixels", 0) for r in run["results"])]
+            w, h = run["size"]
+            inh = run.get("inherent", {})
+            print(f"**{run['scene']} {w}x{h}**: inherent PSNR traceable {db(inh.get('traceable'))} dB, "
+                  f"missing {db(inh.get('missing'))} dB, sky {db(inh.get('sky'))} dB"
+                  + (f"; oracles {db(run['oracles']['psnr'])} dB, {pct(run['oracles']['within_1_255'])} "
+                     f"within 1/255, {db(run['oracles']['psnr_off_edges'])} dB off edges"
+                     if run.get("oracles") else "") + "\n")
+            print("| technique | " + " | ".join(present) + " |")
+            print("|---|" + "---|" * len(present))
+            for label, r in zip(labels_of(run), run["results"]):
+                if only_defaults and (r.get("preset") or label != r["technique"]):
+                    continue
+                print(f"| {label} | " + " | ".join(region_cell(r, n) for n in present) + " |")
+            print()
+
+
 def equal_error(paths, baseline="linear-binary", slack=0.25):
     print("| scene | size | target PSNR traceable dB | technique | fastest variant at target | ms | speed-up vs "
           f"{baseline} |")
@@ -90,5 +141,9 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit("usage: bench_table.py bench.json [more.json ...]")
-    main(sys.argv[1:])
-    equal_error(sys.argv[1:])
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    if "--regions" in sys.argv:
+        regions(args, only_defaults="--defaults" in sys.argv)
+    else:
+        main(args)
+        equal_error(args)
