@@ -99,7 +99,7 @@ def regions(paths, only_defaults=False):
                   f"missing {db(inh.get('missing'))} dB, sky {db(inh.get('sky'))} dB"
                   + (f"; oracles {db(run['oracles']['psnr'])} dB, {pct(run['oracles']['within_1_255'])} "
                      f"within 1/255, {db(run['oracles']['psnr_off_edges'])} dB off edges"
-                     if run.get("oracles") else "") + "\n")
+                     if run.get("oracles", {}).get("pixels") else "") + "\n")
             print("| technique | " + " | ".join(present) + " |")
             print("|---|" + "---|" * len(present))
             for label, r in zip(labels_of(run), run["results"]):

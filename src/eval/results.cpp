@@ -333,7 +333,7 @@ std::string results_table(const RunResults& run, const std::string& clock) {
   out += format_table(header, rows);
   out += "trace dB: vs the screen-space ideal on traceable pixels; correct/ok: traceable pixels hit "
          "with the right colour; n/a: not handled.\n";
-  if (run.oracles)
+  if (run.oracles && run.oracles->pixels > 0)
     out += "oracles (planar vs reference, mirror reflector pixels): " + db_text(run.oracles->psnr) +
            " dB, " + percent_text(run.oracles->within_1_255) + " within 1/255, " +
            db_text(run.oracles->psnr_off_edges) + " dB off " + std::to_string(run.oracles->edge_pixels) +
