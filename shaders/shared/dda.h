@@ -8,10 +8,10 @@ SSR_SHARED_BEGIN
 
 struct DdaParams {
   RayOptions ray;                         // shared tracer options (src/techniques/ray_options.h)
-  int max_steps SSR_DEFAULT(256);         // march iterations before giving up (steps)
+  int max_steps SSR_DEFAULT(0);           // march iterations before giving up (steps); 0 auto
   float stride SSR_DEFAULT(1.0f);         // pixels along the major axis per step (pixels)
   float thickness SSR_DEFAULT(0.15f);     // how far behind the depth buffer still counts as a hit (world units)
-  float max_distance SSR_DEFAULT(50.0f);  // longest reflection ray (world units)
+  float max_distance SSR_DEFAULT(0.0f);   // longest reflection ray (world units); 0 auto
   int refine_steps SSR_DEFAULT(4);        // bisection steps inside the last stride (stride > 1 only)
   int jitter SSR_DEFAULT(0);              // 1: shift each pixel's step grid by a random fraction of the stride
   int pad0, pad1;                         // std140 blocks are whole vec4s: keep sizeof a multiple of 16

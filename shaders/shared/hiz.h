@@ -10,11 +10,11 @@ SSR_SHARED_BEGIN
 
 struct HizParams {
   RayOptions ray SSR_DEFAULT((RayOptions{}));
-  int max_iterations SSR_DEFAULT(128);  // cap on pyramid cell visits per ray
+  int max_iterations SSR_DEFAULT(256);  // cap on pyramid cell visits per ray (128 left pedestal 6.8 dB short of 512)
   int start_level SSR_DEFAULT(0);       // pyramid level of the first step
   int max_level SSR_DEFAULT(10);        // coarsest level the trace climbs to
   float thickness SSR_DEFAULT(0.15f);   // how far behind the depth buffer still counts (world units)
-  float max_distance SSR_DEFAULT(50.0f);  // the ray's length (world units)
+  float max_distance SSR_DEFAULT(0.0f);   // the ray's length (world units); 0 auto
 };
 
 SSR_SHARED_END

@@ -6,12 +6,12 @@
 SSR_SHARED_BEGIN
 
 struct LinearBinaryParams {
-  // The paper fades at the screen edges: edge_fade on by default here.
-  RayOptions ray SSR_DEFAULT((RayOptions{1, -1.0f, 0, 0.0f, 1, 0, 0, 0}));
-  int linear_steps SSR_DEFAULT(100);      // SSR_linearsteps: samples between the origin and max_distance
+  // Edge fade: auto (on with the Roberts blend, as in the paper; the roberts-* presets set it).
+  RayOptions ray;
+  int linear_steps SSR_DEFAULT(300);      // SSR_linearsteps: samples between the origin and max_distance (the paper: 100)
   int binary_steps SSR_DEFAULT(10);       // bisection steps after the first hit
-  float thickness SSR_DEFAULT(0.1f);      // t_ray: how far behind the depth buffer still counts (world units)
-  float max_distance SSR_DEFAULT(9.0f);   // D_max: the ray's length (world units)
+  float thickness SSR_DEFAULT(0.0f);      // t_ray: how far behind the depth buffer still counts (world units); 0 auto
+  float max_distance SSR_DEFAULT(0.0f);   // D_max: the ray's length (world units); 0 auto
 };
 
 SSR_SHARED_END

@@ -10,7 +10,7 @@ struct RayOptions {
   float roughness SSR_DEFAULT(-1.0f);         // < 0: the G-buffer's roughness; else used everywhere
   int backface_thickness SSR_DEFAULT(0);      // 1: a hit lies between the front and back-face depth
   float falloff_distance SSR_DEFAULT(0.0f);   // > 0: confidence fades out towards this ray length
-  int edge_fade SSR_DEFAULT(0);               // 1: confidence *= clamp(1 - |u-.5| - |v-.5|, 0, 1)
+  int edge_fade SSR_DEFAULT(-1);              // 1: confidence *= clamp(1 - |u-.5| - |v-.5|, 0, 1); -1 auto (resolved on the CPU)
   int fresnel SSR_DEFAULT(0);                 // 1 (Roberts blend): weight *= Schlick Fresnel
   int blend SSR_DEFAULT(0);                   // 0: standard composite; 1: Roberts blend
   int seed SSR_DEFAULT(0);                    // random seed of the rough samples and jitter

@@ -28,19 +28,29 @@ bool draw_param_panel(ParamSet& params) {
     const ParamDesc& d = params.table()[i];
     ImGui::PushID(static_cast<int>(i));
     const double before = params.get(i);
+    // "auto" parameters: a checkbox; unticked, the slider starts at the range's geometric mean.
+    if (d.has_auto()) {
+      bool automatic = params.is_auto(i);
+      if (ImGui::Checkbox("##auto", &automatic))
+        params.set(i, automatic ? d.auto_value
+                                : (d.type == ParamType::Float ? std::sqrt(d.min * d.max) : std::round(std::sqrt(d.min * d.max))));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: %s", d.help);
+      ImGui::SameLine();
+    }
+    ImGui::BeginDisabled(params.is_auto(i));
     switch (d.type) {
       case ParamType::Float: {
         float v = static_cast<float>(before);
         // Wide ranges are easier to tune on a logarithmic slider.
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
-        if (ImGui::SliderFloat(d.name, &v, static_cast<float>(d.min), static_cast<float>(d.max), "%.4g", flags))
+        if (ImGui::SliderFloat(d.name, &v, static_cast<float>(d.min), static_cast<float>(d.max), params.is_auto(i) ? "auto" : "%.4g", flags))
           params.set(i, std::clamp<double>(v, d.min, d.max));
         break;
       }
       case ParamType::Int: {
         int v = static_cast<int>(before);
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
-        if (ImGui::SliderInt(d.name, &v, static_cast<int>(d.min), static_cast<int>(d.max), "%d", flags))
+        if (ImGui::SliderInt(d.name, &v, static_cast<int>(d.min), static_cast<int>(d.max), params.is_auto(i) ? "auto" : "%d", flags))
           params.set(i, std::clamp<double>(v, d.min, d.max));
         break;
       }
@@ -56,7 +66,8 @@ bool draw_param_panel(ParamSet& params) {
         break;
       }
     }
-    if (ImGui::IsItemHovered())
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
       ImGui::SetTooltip("%s\n%s%s%s\nrange %s, default %s", params.key(i).c_str(), d.help,
                         *d.unit ? "\nunit: " : "", d.unit, params.range_string(i).c_str(),
                         params.default_string(i).c_str());

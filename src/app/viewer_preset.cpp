@@ -141,7 +141,7 @@ std::vector<std::string> capture_params(Technique& technique) {
   std::vector<std::string> out;
   for (std::size_t i = 0; i < p.size(); ++i) {
     std::string value = p.to_string(i);
-    if (p.table()[i].type == ParamType::Float) {  // to_string rounds to 6 digits
+    if (p.table()[i].type == ParamType::Float && !p.is_auto(i)) {  // to_string rounds to 6 digits
       char buf[64];
       const auto r = std::to_chars(buf, buf + sizeof buf, static_cast<float>(p.get(i)));
       value.assign(buf, r.ptr);

@@ -32,6 +32,7 @@ Renderer::Renderer(const Scene& scene, int width, int height, gl::ShaderSource s
     : scene_(scene), shaders_(std::move(shaders)) {
   static std::atomic<std::uint64_t> next_id{1};
   scene_id_ = next_id++;
+  scene_diagonal_ = bounding_diagonal(scene_);
   // Reversed-Z: depth 1 at the near plane, 0 at the far plane, in [0,1] clip space.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   reload_shaders();
@@ -245,7 +246,7 @@ void Renderer::run_technique(Technique& technique, gl::PassTimer* timer) {
   bind_frame_inputs();
   glBindImageTexture(IMG_OUT2, debug_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(IMG_REFRACTION, refraction_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  TechniqueInputs in{*this, gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer};
+  TechniqueInputs in{*this, gbuffer_, lit_, frame_ubo_.id(), width_, height_, scene_, timer, scene_diagonal_};
   technique.run(in, reflection_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -52,6 +52,8 @@ class Renderer {
   // Unique for every Renderer (and so every scene upload) in the process: techniques that cache
   // per-scene data key it on this, never on an address that a later scene may reuse.
   std::uint64_t scene_id() const { return scene_id_; }
+  // The diagonal of the scene's bounding box (world units): "auto" ray lengths.
+  float scene_diagonal() const { return scene_diagonal_; }
   const gl::ShaderSource& shaders() const { return shaders_; }
   // Replaces the lights, environment and ambient (live editing); the geometry stays. Throws
   // InputError, changing nothing, when the result would not pass validate().
@@ -106,6 +108,7 @@ class Renderer {
   Camera camera_{};
   int frame_index_ = 0;
   std::uint64_t scene_id_ = 0;
+  float scene_diagonal_ = 0;
 };
 
 }  // namespace ssr

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/errors.h"
@@ -147,6 +148,16 @@ void validate(const Scene& s) {
         c.far_plane <= c.near_plane)
       fail(s, where + "needs 0 < near < far");
   }
+}
+
+float bounding_diagonal(const Scene& scene) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const Mesh& m : scene.meshes)
+    for (const Vertex& v : m.vertices) {
+      lo = glm::min(lo, v.position);
+      hi = glm::max(hi, v.position);
+    }
+  return hi.x >= lo.x ? glm::length(hi - lo) : 0.0f;
 }
 
 glm::vec3 material_f0(const Material& m) {

@@ -111,6 +111,9 @@ struct Scene {
   std::size_t triangle_count() const;
 };
 
+// The diagonal of the axis-aligned box around every vertex (0 for an empty scene).
+float bounding_diagonal(const Scene& scene);
+
 // Specular reflectance at normal incidence (as shaders/common/brdf.glsl's f0_of).
 glm::vec3 material_f0(const Material& m);
 // Whether any surface of the scene can do reflection or refraction work: a planar reflector, a

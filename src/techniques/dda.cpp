@@ -12,24 +12,37 @@
 #include "shared/dda.h"
 #include "techniques/tracer.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ssr {
 namespace {
 
 using P = shared::DdaParams;
 const std::vector<ParamDesc> kTable = with_ray_options<P>({
-    SSR_PARAM_INT(P, max_steps, 1, 8192, "steps", "Screen-space steps before the ray gives up."),
+    with_auto(SSR_PARAM_INT(P, max_steps, 1, 8192, "steps",
+                            "Screen-space steps before the ray gives up; auto: the image diagonal over the stride, "
+                            "so that a ray can cross the screen at any resolution.")),
     SSR_PARAM_FLOAT(P, stride, 1.0, 64.0, 1.0, "pixels", "Pixels along the ray's major axis per step."),
     SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
                     "A ray this far or less behind the depth buffer counts as inside the surface."),
-    SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units", "Longest reflection ray, before near-plane clipping."),
+    with_auto(SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units",
+                              "Longest reflection ray, before near-plane clipping; auto: the scene's bounding-box diagonal.")),
     SSR_PARAM_INT(P, refine_steps, 0, 16, "steps", "Bisection steps inside the last stride when stride > 1 (0: keep the stride's hit)."),
     SSR_PARAM_BOOL(P, jitter, "Shift each pixel's steps by a random fraction of the stride: banding from large strides becomes noise."),
 });
 
+// A fixed step count covers a fixed number of pixels (256 steps of 1 px reached 37% of
+// gallery's floor at 1080p, 19% at 4K): the auto count covers the image diagonal.
+void resolve(P& p, const AutoContext& c) {
+  if (p.max_steps == 0) p.max_steps = std::clamp(static_cast<int>(std::ceil(c.image_diagonal / p.stride)), 1, 8192);
+  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+}
+
 }  // namespace
 
 std::unique_ptr<Technique> make_dda_technique() {
-  return std::make_unique<TracerTechnique<P>>("dda", kTable, "techniques/dda.comp");
+  return std::make_unique<TracerTechnique<P>>("dda", kTable, "techniques/dda.comp", resolve);
 }
 
 }  // namespace ssr

@@ -56,12 +56,17 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
     SSR_PARAM_INT(P, max_level, 0, 15, "level", "Coarsest pyramid level the trace climbs to (capped by the chain)."),
     SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
                     "A ray point this far or less behind the depth buffer counts as a hit."),
-    SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units", "Length of the traced ray."),
+    with_auto(SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units",
+                              "Length of the traced ray; auto: the scene's bounding-box diagonal.")),
 });
+
+void resolve(P& p, const AutoContext& c) {
+  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+}
 
 class HizTechnique : public TracerTechnique<P> {
  public:
-  HizTechnique() : TracerTechnique<P>("hiz", kTable, "techniques/hiz.comp") {}
+  HizTechnique() : TracerTechnique<P>("hiz", kTable, "techniques/hiz.comp", resolve) {}
   void load(const gl::ShaderSource& src) override {
     pyramid_.load(src);
     TracerTechnique<P>::load(src);

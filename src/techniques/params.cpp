@@ -32,11 +32,13 @@ double ParamSet::read(const void* base, std::size_t i) const {
 }
 
 double ParamSet::get(std::size_t i) const { return read(data_, i); }
+bool ParamSet::is_auto(std::size_t i) const { return table_[i].has_auto() && get(i) == table_[i].auto_value; }
 double ParamSet::get_default(std::size_t i) const { return read(defaults_, i); }
 
 void ParamSet::set(std::size_t i, double value) {
   const ParamDesc& d = table_[i];
-  if (!std::isfinite(value) || value < d.min || value > d.max)
+  const bool is_auto = d.has_auto() && value == d.auto_value;
+  if (!is_auto && (!std::isfinite(value) || value < d.min || value > d.max))
     throw InputError("parameter '" + key(i) + "' must be in " + range_string(i) + ", got " +
                      format(i, value) + ".");
   auto* p = static_cast<std::byte*>(data_) + d.offset;
@@ -54,6 +56,10 @@ void ParamSet::set(std::size_t i, double value) {
 
 void ParamSet::set_from_string(std::size_t i, std::string_view text) {
   const ParamDesc& d = table_[i];
+  if (text == "auto") {
+    if (!d.has_auto()) throw InputError("parameter '" + key(i) + "' does not take auto (it takes " + range_string(i) + ").");
+    return set(i, d.auto_value);
+  }
   if (d.type == ParamType::Bool) {
     if (text == "true" || text == "on" || text == "1") return set(i, 1);
     if (text == "false" || text == "off" || text == "0") return set(i, 0);
@@ -81,6 +87,7 @@ void ParamSet::reset_all() {
 
 std::string ParamSet::format(std::size_t i, double v) const {
   const ParamDesc& d = table_[i];
+  if (d.has_auto() && v == d.auto_value) return "auto";
   if (d.type == ParamType::Bool) return v != 0 ? "true" : "false";
   if (d.type == ParamType::Choice) {
     const auto c = static_cast<std::size_t>(v);
@@ -97,13 +104,13 @@ std::string ParamSet::default_string(std::size_t i) const { return format(i, get
 
 std::string ParamSet::range_string(std::size_t i) const {
   const ParamDesc& d = table_[i];
-  if (d.type == ParamType::Bool) return "true|false";
+  if (d.type == ParamType::Bool) return d.has_auto() ? "auto|true|false" : "true|false";
   if (d.type == ParamType::Choice) {
-    std::string s;
+    std::string s = d.has_auto() ? "auto|" : "";
     for (std::size_t c = 0; c < d.choices.size(); ++c) s += (c ? "|" : "") + std::string(d.choices[c]);
     return s;
   }
-  return "[" + format(i, d.min) + ", " + format(i, d.max) + "]";
+  return std::string(d.has_auto() ? "auto|" : "") + "[" + format(i, d.min) + ", " + format(i, d.max) + "]";
 }
 
 std::pair<std::string, std::string> split_assignment(std::string_view text) {

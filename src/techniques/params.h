@@ -4,7 +4,9 @@
 // very same layout) gets one table of ParamDesc. That table drives the CLI (--set), the ImGui
 // panel, `ssrlab techniques`, JSON presets and bench sweeps. Keys are "<technique>.<name>".
 #pragma once
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,7 +25,17 @@ struct ParamDesc {
   const char* unit;      // "world units", "steps", "" ...
   const char* help;      // one sentence
   std::vector<const char*> choices = {};  // Choice only: the names, stored as their index
+  // Parameters that also take "auto" store it as this value (outside [min, max]); the technique
+  // resolves it each frame from the scene and the image size. NaN: no "auto".
+  double auto_value = std::numeric_limits<double>::quiet_NaN();
+  bool has_auto() const { return !std::isnan(auto_value); }
 };
+
+// `d`, also taking "auto" (stored as `sentinel`); the help sentence should say what auto is.
+inline ParamDesc with_auto(ParamDesc d, double sentinel = 0.0) {
+  d.auto_value = sentinel;
+  return d;
+}
 
 #define SSR_PARAM_FLOAT(P, m, lo, hi, st, unit, help) \
   ::ssr::ParamDesc { #m, ::ssr::ParamType::Float, offsetof(P, m), lo, hi, st, unit, help }
@@ -52,17 +64,19 @@ class ParamSet {
   // Index of "name" or "<prefix>.name"; -1 when unknown.
   int find(std::string_view key) const;
   double get(std::size_t i) const;
+  bool is_auto(std::size_t i) const;  // the value is the "auto" sentinel
   double get_default(std::size_t i) const;
   // Sets a value; throws InputError (one sentence with the key and range) when out of range,
   // non-finite or not an integer for Int/Bool/Choice.
   void set(std::size_t i, double value);
-  // Parses "0.05", "64", "true"/"false"/"on"/"off"/"1"/"0", or a choice name.
+  // Parses "0.05", "64", "true"/"false"/"on"/"off"/"1"/"0", a choice name, or "auto" where
+  // the parameter takes it.
   void set_from_string(std::size_t i, std::string_view text);
   void reset(std::size_t i);
   void reset_all();
   std::string to_string(std::size_t i) const;          // the value as the CLI would take it
   std::string default_string(std::size_t i) const;
-  std::string range_string(std::size_t i) const;       // "[1, 4096]" or "true|false" or "a|b|c"
+  std::string range_string(std::size_t i) const;       // "[1, 4096]", "auto|[1, 4096]", "true|false", "a|b|c"
 
  private:
   double read(const void* base, std::size_t i) const;

@@ -23,12 +23,12 @@ const std::vector<Preset>& presets() {
        "Kim 2018, fig. 29: low quality with depth linear interpolation"},
       {"roberts-default", "linear-binary",
        {"linear-binary.linear_steps=100", "linear-binary.binary_steps=10",
-        "linear-binary.thickness=0.1", "linear-binary.max_distance=9"},
-       "Roberts: 100 linear + 10 binary steps, thickness 0.1, max distance 9"},
+        "linear-binary.thickness=0.1", "linear-binary.max_distance=9", "linear-binary.edge_fade=true"},
+       "Roberts: 100 linear + 10 binary steps, thickness 0.1, max distance 9, edge fade"},
       {"roberts-hq", "linear-binary",
        {"linear-binary.linear_steps=500", "linear-binary.binary_steps=10",
-        "linear-binary.thickness=0.1", "linear-binary.max_distance=9"},
-       "Roberts: 500 linear + 10 binary steps"},
+        "linear-binary.thickness=0.1", "linear-binary.max_distance=9", "linear-binary.edge_fade=true"},
+       "Roberts: 500 linear + 10 binary steps, edge fade"},
   };
   return list;
 }

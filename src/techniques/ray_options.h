@@ -30,8 +30,9 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
                  offsetof(R, backface_thickness)));
   t.push_back(at({"falloff_distance", ParamType::Float, 0, 0, 1000, 0.5, "world units",
                   "Confidence fades to zero towards this ray length (0 = no falloff)."}, offsetof(R, falloff_distance)));
-  t.push_back(at({"edge_fade", ParamType::Bool, 0, 0, 1, 1, "",
-                  "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1) (Roberts)."},
+  t.push_back(at(with_auto({"edge_fade", ParamType::Bool, 0, 0, 1, 1, "",
+                            "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1) (Roberts); "
+                            "auto: on with the Roberts blend only."}, -1),
                  offsetof(R, edge_fade)));
   t.push_back(at({"fresnel", ParamType::Bool, 0, 0, 1, 1, "",
                   "Roberts blend only: weight by Schlick Fresnel (the standard composite always applies it)."},

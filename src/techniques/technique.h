@@ -32,6 +32,7 @@ struct TechniqueInputs {
   int width, height;
   const Scene& scene;
   gl::PassTimer* timer;       // may be null
+  float scene_diagonal;       // world units: the scene's bounding-box diagonal ("auto" lengths)
 };
 
 class Technique {
@@ -82,10 +83,10 @@ class TechniqueWithParams : public Technique {
   ParamSet params() override { return ParamSet(name_, table_, &params_, &kDefaults); }
 
  protected:
-  // Uploads params_ to the technique UBO and binds it at UBO_TECHNIQUE.
-  void bind_params() {
+  // Uploads `values` (default: params_) to the technique UBO and binds it at UBO_TECHNIQUE.
+  void bind_params(const P* values = nullptr) {
     if (!ubo_) ubo_ = gl::make_buffer(name_ + " params", sizeof(P));
-    glNamedBufferSubData(ubo_.id(), 0, sizeof(P), &params_);
+    glNamedBufferSubData(ubo_.id(), 0, sizeof(P), values ? values : &params_);
     glBindBufferBase(GL_UNIFORM_BUFFER, UBO_TECHNIQUE, ubo_.id());
   }
   P params_{};

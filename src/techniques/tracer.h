@@ -1,6 +1,8 @@
 // The common shape of a screen-space tracer: a Params struct P that starts with the shared
 // RayOptions, one compute shader built on shaders/common/ssr_main.glsl, one dispatch.
 #pragma once
+#include <cmath>
+#include <functional>
 #include <string>
 
 #include "techniques/ray_options.h"
@@ -8,18 +10,38 @@
 
 namespace ssr {
 
+// What "auto" parameters are resolved from, each frame.
+struct AutoContext {
+  float scene_diagonal = 0;  // world units: the diagonal of the scene's bounding box
+  float image_diagonal = 0;  // pixels
+};
+
 template <class P>
 class TracerTechnique : public TechniqueWithParams<P> {
  public:
-  TracerTechnique(std::string name, std::span<const ParamDesc> table, std::string shader)
-      : TechniqueWithParams<P>(std::move(name), table), shader_(std::move(shader)) {}
+  // `resolve` replaces the technique's own "auto" values in a copy of its parameters.
+  using Resolver = std::function<void(P&, const AutoContext&)>;
+  TracerTechnique(std::string name, std::span<const ParamDesc> table, std::string shader, Resolver resolve = {})
+      : TechniqueWithParams<P>(std::move(name), table), shader_(std::move(shader)), resolve_(std::move(resolve)) {}
 
   void load(const gl::ShaderSource& src) override { program_ = gl::Program::compute(src, shader_); }
+
+  // The parameters as this frame runs them: every "auto" resolved. The shared edge fade's auto
+  // is on with the Roberts blend only (the standard composite already falls back to the
+  // environment at low confidence; fading there only loses reflections).
+  P resolved(const AutoContext& ctx) const {
+    P p = this->params_;
+    if (p.ray.edge_fade < 0) p.ray.edge_fade = p.ray.blend == 1 ? 1 : 0;
+    if (resolve_) resolve_(p, ctx);
+    return p;
+  }
 
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
     gl::ScopedPass pass(in.timer, this->name());
     prepare(in);
-    this->bind_params();
+    const P p = resolved({in.scene_diagonal,
+                          static_cast<float>(std::hypot(double(in.width), double(in.height)))});
+    this->bind_params(&p);
     glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     program_.dispatch_2d(in.width, in.height);
   }
@@ -35,6 +57,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
 
  private:
   std::string shader_;
+  Resolver resolve_;
   gl::Program program_;
 };
 

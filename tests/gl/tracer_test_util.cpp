@@ -6,7 +6,7 @@
 
 #include "core/cli_common.h"
 #include "eval/runner.h"
-#include "scene/builtin_scenes.h"
+#include "scene/scene_io.h"
 
 namespace ssr::test {
 
@@ -29,7 +29,7 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
   auto& slot = cache()[{scene, camera, w, h}];
   if (!slot) {
     slot = std::make_unique<Cached>();
-    slot->scene = make_builtin_scene(scene);
+    slot->scene = load_scene(scene);
     slot->camera = camera.empty() ? slot->scene.cameras.front() : slot->scene.camera(camera);
     slot->renderer = std::make_unique<Renderer>(slot->scene, w, h);
     slot->reference = create_technique("reference");
@@ -42,7 +42,9 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
   t->load(slot->renderer->shaders());
   slot->renderer->render_inputs(slot->camera, nullptr);  // another test may have drawn since
   TracerScore s;
-  s.error = slot->frame->score(*t).error;
+  ScoredFrame::Score score = slot->frame->score(*t);
+  s.error = score.error;
+  s.breakdown = std::move(score.breakdown);
   return s;
 }
 

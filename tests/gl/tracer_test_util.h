@@ -5,12 +5,14 @@
 #include <string>
 #include <vector>
 
+#include "eval/breakdown.h"
 #include "eval/metrics.h"
 
 namespace ssr::test {
 
 struct TracerScore {
   ErrorMetrics error;      // vs the reference (and the screen-space ideal on traceable pixels)
+  Breakdown breakdown;     // per region and class
   double technique_ms = 0; // not used for asserts: timings never are
 };
 

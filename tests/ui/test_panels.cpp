@@ -26,6 +26,7 @@ Scene test_scene() {
 struct ParamIds {
   ImGuiID reset_all = 0;
   std::vector<ImGuiID> widget, reset;
+  std::vector<ImGuiID> automatic;  // the "auto" checkbox of parameters that take auto, else 0
 };
 
 ImGuiHarness::Draw param_draw(ParamSet& params, ParamIds& ids) {
@@ -33,9 +34,11 @@ ImGuiHarness::Draw param_draw(ParamSet& params, ParamIds& ids) {
     ids.reset_all = ImGui::GetID("reset all");
     ids.widget.clear();
     ids.reset.clear();
+    ids.automatic.clear();
     for (std::size_t i = 0; i < params.size(); ++i) {
       ids.widget.push_back(item_id({static_cast<int>(i)}, params.table()[i].name));
       ids.reset.push_back(item_id({static_cast<int>(i)}, "reset"));
+      ids.automatic.push_back(params.table()[i].has_auto() ? item_id({static_cast<int>(i)}, "##auto") : 0);
     }
     return draw_param_panel(params);
   };
@@ -47,6 +50,7 @@ bool all_default(const ParamSet& p) {
   return true;
 }
 
+// (Parameters that take "auto" also draw an "auto" checkbox left of their widget.)
 TEST(ParamPanel, EveryTechniqueDrawsOneWidgetAndOneResetPerParameter) {
   for (const TechniqueInfo& info : technique_registry()) {
     SCOPED_TRACE(info.name);
@@ -62,6 +66,8 @@ TEST(ParamPanel, EveryTechniqueDrawsOneWidgetAndOneResetPerParameter) {
       std::set<ImGuiID> expected{ids.reset_all};
       expected.insert(ids.widget.begin(), ids.widget.end());
       expected.insert(ids.reset.begin(), ids.reset.end());
+      for (ImGuiID a : ids.automatic)
+        if (a) expected.insert(a);
       std::set<ImGuiID> found;
       for (const auto& [id, hit] : hits) found.insert(id);
       EXPECT_EQ(found, expected) << "items other than one widget and one reset per parameter";
@@ -73,6 +79,10 @@ TEST(ParamPanel, EveryTechniqueDrawsOneWidgetAndOneResetPerParameter) {
         const auto& r = hits.at(ids.reset[i]);
         EXPECT_GT(r.min.x, w.max.x);
         EXPECT_LT(std::abs(r.center().y - w.center().y), 4.0f);
+        if (ids.automatic[i]) {
+          ASSERT_TRUE(hits.count(ids.automatic[i]));
+          EXPECT_LT(hits.at(ids.automatic[i]).max.x, w.min.x);
+        }
         if (i > 0) EXPECT_GT(w.min.y, hits.at(ids.widget[i - 1]).max.y);
       }
     }
@@ -97,7 +107,12 @@ TEST(ParamPanel, ClicksChangeValuesAndResetAllRestoresDefaults) {
     for (std::size_t i = 0; i < params.size(); ++i) {
       SCOPED_TRACE(params.key(i));
       const ParamDesc& d = params.table()[i];
-      const double def = params.get_default(i);
+      // An "auto" parameter: untick auto first; its widget then starts from a value of the range.
+      if (params.is_auto(i)) {
+        EXPECT_TRUE(ui.click(ui.exact(ids.automatic[i], hits.at(ids.automatic[i]), draw).center(), draw));
+        EXPECT_FALSE(params.is_auto(i)) << "unticking auto gives a value";
+      }
+      const double def = params.get(i);
       const auto hit = ui.exact(ids.widget[i], hits.at(ids.widget[i]), draw);
       switch (d.type) {
         case ParamType::Float:

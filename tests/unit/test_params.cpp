@@ -76,8 +76,13 @@ TEST(Params, RegistryTablesAreWellFormed) {
       const ParamDesc& d = p.table()[i];
       EXPECT_TRUE(keys.insert(d.name).second) << p.key(i);
       EXPECT_LE(d.min, d.max) << p.key(i);
-      EXPECT_GE(p.get_default(i), d.min) << p.key(i);
-      EXPECT_LE(p.get_default(i), d.max) << p.key(i);
+      // A default is in range, or "auto" where the parameter takes it; "auto" is no value
+      // of the range, so that it cannot be mistaken for one.
+      if (d.has_auto()) EXPECT_TRUE(d.auto_value < d.min || d.auto_value > d.max) << p.key(i);
+      if (!(d.has_auto() && p.get_default(i) == d.auto_value)) {
+        EXPECT_GE(p.get_default(i), d.min) << p.key(i);
+        EXPECT_LE(p.get_default(i), d.max) << p.key(i);
+      }
       EXPECT_GT(std::string(d.help).size(), 10u) << p.key(i);
       for (char c : std::string(d.name)) EXPECT_TRUE(std::islower(c) || std::isdigit(c) || c == '_') << p.key(i);
     }
@@ -94,4 +99,31 @@ TEST(Cli, ParseSize) {
   EXPECT_THROW(parse_size("1280"), InputError);
   EXPECT_THROW(parse_size("1280x720x3"), InputError);
   EXPECT_THROW(parse_size("9999999x5"), InputError);
+}
+
+// "auto" is a value like any other: it parses, prints, resets and is refused where a parameter
+// does not take it.
+TEST(Params, AutoValues) {
+  auto t = create_technique("linear-binary");
+  ParamSet p = t->params();
+  const std::size_t dist = static_cast<std::size_t>(p.find("max_distance"));
+  EXPECT_TRUE(p.is_auto(dist));
+  EXPECT_EQ(p.to_string(dist), "auto");
+  EXPECT_EQ(p.range_string(dist), "auto|[0.01, 10000]");
+  p.set_from_string(dist, "12.5");
+  EXPECT_FALSE(p.is_auto(dist));
+  EXPECT_DOUBLE_EQ(p.get(dist), 12.5);
+  p.set_from_string(dist, "auto");
+  EXPECT_TRUE(p.is_auto(dist));
+  EXPECT_THROW(p.set_from_string(dist, "Auto"), InputError);
+  EXPECT_THROW(p.set(dist, 0.005), InputError);  // below the range, and not the sentinel
+  const std::size_t fade = static_cast<std::size_t>(p.find("edge_fade"));
+  EXPECT_EQ(p.to_string(fade), "auto");
+  EXPECT_EQ(p.range_string(fade), "auto|true|false");
+  p.set_from_string(fade, "true");
+  EXPECT_EQ(p.to_string(fade), "true");
+  p.reset(fade);
+  EXPECT_TRUE(p.is_auto(fade));
+  const std::size_t steps = static_cast<std::size_t>(p.find("linear_steps"));
+  EXPECT_THROW(p.set_from_string(steps, "auto"), InputError);  // a count without auto
 }

@@ -11,11 +11,12 @@ command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (apt-get install x
 scenes=$("$ssrlab" scenes | awk '/^built-in/ {on=1; next} /^[^ ]/ {on=0} on && NF {print $1}')
 [ -n "$scenes" ] || { echo "no built-in scenes listed"; exit 1; }
 cat > "$outdir/walk.txt" <<'SCRIPT'
-# A (left) = none, B (right) = linear: the right half gains the reflections.
+# A (left) = none, B (right) = hiz: the right half gains the reflections. (hiz, not linear:
+# at its auto step linear finds nothing on hard-depth-range, see docs/ROBUSTNESS.md.)
 technique none
 frames 2
 screenshot none.png
-technique-b linear
+technique-b hiz
 split 0.5
 frames 2
 screenshot split.png
@@ -30,7 +31,7 @@ frames 1
 technique dda
 view hits
 frames 1
-technique hiz
+technique linear
 view confidence
 frames 1
 technique ppr

@@ -1,0 +1,80 @@
+// Every technique at its defaults (DESIGN: defaults are the product), on every built-in scene
+// and pedestal at 640x360 on llvmpipe: the verdict a user gets without touching a slider.
+// Each tolerance carries its measurement (this machine, llvmpipe, reference at 64 samples).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+
+#include "gl_test_env.h"
+#include "tracer_test_util.h"
+
+using namespace ssr;
+
+namespace {
+
+const char* const kScenes[] = {"gallery", "cornell", "corridor", "pedestal", "gallery:reflectors=8",
+                               "gallery:normal_map=ripples"};
+
+std::string scene_path(const std::string& s) {
+  return s == "pedestal" ? std::string(SSRLAB_TEST_DATA) + "/../../assets/scenes/pedestal.json" : s;
+}
+
+// ppr handles the planar reflectors only; the others every reflective pixel.
+const RegionFigures& handled(const test::TracerScore& s, const std::string& technique) {
+  return *s.breakdown.find(technique == "ppr" ? "planar" : "all");
+}
+
+}  // namespace
+
+// Correct coverage (traceable pixels claimed with the ideal's colour) on the mirror scenes, for
+// the region each technique handles. Measured: gallery 96.5% (ppr) to 98.7% (dda);
+// gallery:reflectors=8 96.4% (ppr) to 98.5% (dda). Before the auto defaults: linear-binary 8.3%,
+// dda 82.8% on gallery. On the ripples floor (normal-mapped mirror) dda and hiz reach 94.0%
+// and ppr 82.4% (its unfilled holes: the fallback tracer of the defaults issue is what is
+// missing): pinned below their measurements.
+TEST(Defaults, CorrectCoverageOnMirrorScenes) {
+  const std::map<std::pair<std::string, std::string>, double> pinned = {
+      {{"gallery:normal_map=ripples", "dda"}, 0.93},
+      {{"gallery:normal_map=ripples", "hiz"}, 0.93},
+      {{"gallery:normal_map=ripples", "ppr"}, 0.80}};
+  for (const char* scene : {"gallery", "gallery:reflectors=8", "gallery:normal_map=ripples"})
+    for (const char* technique : {"linear", "linear-binary", "dda", "hiz", "ppr"}) {
+      const test::TracerScore s = test::score_technique(scene_path(scene), 640, 360, technique, {});
+      const RegionFigures& f = handled(s, technique);
+      ASSERT_TRUE(f.traceable.correct_coverage) << scene << " " << technique;
+      const double correct = *f.traceable.correct_coverage;
+      std::printf("defaults %-28s %-14s correct coverage %5.1f%%, %.2f dB vs ideal\n", scene, technique,
+                  correct * 100, f.traceable.psnr_ideal.value_or(0));
+      auto it = pinned.find({scene, technique});
+      EXPECT_GE(correct, it == pinned.end() ? 0.95 : it->second) << scene << " " << technique;
+      EXPECT_EQ(s.error.nonfinite, 0u);
+    }
+}
+
+// At 4x its default effort a technique gains at most 1.5 dB of traceable PSNR against the ideal
+// on every scene: the defaults are near the technique's best. Measured gains: hiz (256 -> 1024
+// iterations) 0.0-0.1 dB, where 128 iterations left pedestal 6.8 dB short; linear (1024 ->
+// 4096 steps over the scene's diagonal) 0.8 dB on gallery, 0.9 on the 8 tiles, negative on
+// pedestal, cornell and ripples, where 256 steps of 0.1 left gallery 3.7 dB short;
+// linear-binary (300 -> 1200 steps) 0.8 dB on gallery, 1.3 on the 8 tiles, 0.8 on pedestal,
+// negative elsewhere. Corridor is the open gap of the defaults issue, pinned at its
+// measurements: its 40 m floor reflections need finer view-space steps, linear 1.8 dB
+// (21.7 -> 23.5), linear-binary 4.3 dB (20.5 -> 24.9).
+TEST(Defaults, WithinOneAndAHalfDbOfFourTimesTheEffort) {
+  const std::map<std::string, std::vector<std::string>> more = {
+      {"linear", {"linear.max_steps=4096"}},
+      {"linear-binary", {"linear-binary.linear_steps=1200"}},
+      {"hiz", {"hiz.max_iterations=1024"}}};
+  for (const char* scene : kScenes)
+    for (const auto& [technique, sets] : more) {
+      const test::TracerScore a = test::score_technique(scene_path(scene), 640, 360, technique, {});
+      const test::TracerScore b = test::score_technique(scene_path(scene), 640, 360, technique, sets);
+      const double pa = a.breakdown.find("all")->traceable.psnr_ideal.value_or(0);
+      const double pb = b.breakdown.find("all")->traceable.psnr_ideal.value_or(0);
+      std::printf("effort %-28s %-14s default %6.2f dB, 4x %6.2f dB\n", scene, technique.c_str(), pa, pb);
+      const bool corridor = std::string(scene) == "corridor";
+      const double allowed = corridor && technique == "linear-binary" ? 4.6 : corridor && technique == "linear" ? 2.0 : 1.5;
+      EXPECT_LE(pb - pa, allowed) << scene << " " << technique;
+    }
+}
