@@ -53,3 +53,41 @@ TEST(Refraction, GlassBendsWhatLiesBehind) {
   }
   test::expect_no_gl_errors();
 }
+
+// Outputs a technique does not write are cleared by the frame: after a tracer has refracted the
+// glass, a technique that writes no refraction (ppr, planar, none) shows the unbent background
+// there, exactly as none does. Every technique's composite equals none's outside the pixels it
+// may change (reflective pixels; glass pixels too for the tracers, which refract). ppr once
+// skipped the clear and showed the previous technique's refraction.
+TEST(Refraction, UnwrittenOutputsAreCleared) {
+  const Scene scene = make_builtin_scene("glass");
+  const int w = 160, h = 90;
+  Renderer r(scene, w, h);
+  auto none = create_technique("none");
+  none->load(r.shaders());
+  r.render(scene.cameras[0], *none, ViewMode::Final, nullptr);
+  const RgbaImageF base = r.read_texture(r.color());
+  const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
+  const std::vector<std::uint16_t> material = r.read_material();
+  for (const TechniqueInfo& info : technique_registry()) {
+    if (info.name == "reference") continue;
+    auto tracer = create_technique("hiz");  // leaves a refraction image behind
+    tracer->load(r.shaders());
+    r.render(scene.cameras[0], *tracer, ViewMode::Final, nullptr);
+    auto t = info.create();
+    t->load(r.shaders());
+    r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
+    const RgbaImageF img = r.read_texture(r.color());
+    std::size_t compared = 0, differ = 0;
+    for (std::size_t p = 0; p < static_cast<std::size_t>(w) * h; ++p) {
+      const bool reflective = (material[p * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;
+      const bool is_glass = glass.pixels[p * 4 + 3] >= 1.0f;
+      if (reflective || (is_glass && t->writes_refraction())) continue;
+      ++compared;
+      for (std::size_t c = 0; c < 3; ++c) differ += img.pixels[p * 4 + c] != base.pixels[p * 4 + c];
+    }
+    EXPECT_GT(compared, static_cast<std::size_t>(w * h / 2)) << info.name;
+    EXPECT_EQ(differ, 0u) << info.name << ": the composite differs from none's where it may not";
+  }
+  test::expect_no_gl_errors();
+}
