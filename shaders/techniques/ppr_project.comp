@@ -11,6 +11,33 @@ layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprRe
 layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform coherent uimage2D intermediate;
 layout(location = 0) uniform uint u_fraction_bits;
 
+// Where the mirror image (across r) of view-space point p lands, in continuous pixels.
+bool mirror_to_pixel(vec3 p_vs, PprReflector r, out vec2 px) {
+  vec3 x = view_to_world_pos(p_vs);
+  vec3 m = x - 2.0 * (dot(r.plane.xyz, x) + r.plane.w) * r.plane.xyz;
+  vec2 uv;
+  float depth;
+  px = vec2(0.0);
+  if (!project_to_uv((frame.view * vec4(m, 1.0)).xyz, uv, depth)) return false;
+  px = uv * frame.viewport.xy;
+  return true;
+}
+
+// How the mirror image moves on screen per source pixel (columns: source +x, +y), to first
+// order from the source's tangent plane (its neighbours' eye rays); false where degenerate.
+bool mirror_jacobian(GSample g, ivec2 p, vec2 dest, PprReflector r, out mat2 jacobian) {
+  jacobian = mat2(1.0);
+  for (int a = 0; a < 2; ++a) {
+    vec3 ray = normalize(view_position(pixel_to_uv(p + (a == 0 ? ivec2(1, 0) : ivec2(0, 1))), 0.5));
+    float denom = dot(ray, g.n_vs);
+    if (abs(denom) < 1e-4) return false;
+    vec2 moved;
+    if (!mirror_to_pixel(ray * (dot(g.pos_vs, g.n_vs) / denom), r, moved)) return false;
+    jacobian[a] = moved - dest;
+  }
+  return abs(determinant(jacobian)) >= 1e-6;
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
@@ -41,7 +68,28 @@ void main() {
     ivec2 q = ivec2(dest);
     // The destination must show this reflector (not an occluder, not another reflector).
     if (texelFetch(g_material, q, 0).x != uint(k + 1)) continue;
-    vec2 offset = (vec2(p) + 0.5) - dest;  // from the destination back to this source pixel
-    imageAtomicMin(intermediate, q, ppr_pack(offset, u_fraction_bits));
+    // Each destination pixel stores the offset from its centre back to the source point that
+    // lands exactly there: source = this pixel + J^-1 (centre - dest). A mirror flips a screen
+    // axis (a floor turns screen-up into screen-down), so the destination's fraction cannot be
+    // added to the source as it is: that biased the source by up to a pixel along the flipped
+    // axis (the dark line at the wall/floor junction). Where the mirror magnifies (a near
+    // object's reflection), one source covers several destination pixels: it is splatted over
+    // its footprint (at most 5x5), or the skipped pixels would keep a source from the wall
+    // behind it (the stripes in the spheres' reflections).
+    mat2 jacobian;
+    bool exact = mirror_jacobian(g, p, dest, r, jacobian);
+    mat2 to_source = exact ? inverse(jacobian) : mat2(0.0);
+    ivec2 reach = exact ? ivec2(min(ceil(0.5 * (abs(jacobian[0]) + abs(jacobian[1]))), vec2(2.0))) : ivec2(0);
+    for (int dy = -reach.y; dy <= reach.y; ++dy)
+      for (int dx = -reach.x; dx <= reach.x; ++dx) {
+        ivec2 d = q + ivec2(dx, dy);
+        if (any(lessThan(d, ivec2(0))) || any(greaterThanEqual(d, size))) continue;
+        vec2 move = to_source * (vec2(d) + 0.5 - dest);
+        // Only the destination pixels whose centre lies in this source pixel's footprint.
+        if ((dx != 0 || dy != 0) && any(greaterThan(abs(move), vec2(0.5)))) continue;
+        if ((dx != 0 || dy != 0) && texelFetch(g_material, d, 0).x != uint(k + 1)) continue;
+        vec2 source = vec2(p) + 0.5 + clamp(move, vec2(-1.0), vec2(1.0));
+        imageAtomicMin(intermediate, d, ppr_pack(source - (vec2(d) + 0.5), u_fraction_bits));
+      }
   }
 }

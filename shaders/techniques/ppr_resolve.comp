@@ -36,16 +36,27 @@ void main() {
   bool hole = ppr_is_empty(v);
   vec2 source = vec2(p) + 0.5 + (hole ? vec2(0.0) : ppr_unpack(v, u_fraction_bits));
   if (hole && params.hole_fill > 0) {
-    // Borrow the nearest neighbour's solution: its source, moved by the same pixel step.
+    // Borrow a neighbour's source as it is. Moving it by the destination's step assumed the
+    // mirror keeps screen orientation and went the wrong way along the flipped axis. A borrowed
+    // source must also mirror back next to this pixel: otherwise this pixel's true reflection
+    // is something else (often the sky past an object's outline), and it stays a hole.
     const ivec2 dirs[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),
                                    ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
+    PprReflector r = reflectors[g.reflector - 1u];
     int n = params.hole_fill == 1 ? 4 : 8;
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i < n && hole; ++i) {
       uint w = packed_at(p + dirs[i]);
       if (ppr_is_empty(w)) continue;
-      source = vec2(p) + 0.5 + ppr_unpack(w, u_fraction_bits);
+      vec2 borrowed = vec2(p + dirs[i]) + 0.5 + ppr_unpack(w, u_fraction_bits);
+      ivec2 b = clamp(ivec2(borrowed), ivec2(0), ivec2(frame.viewport.xy) - 1);
+      vec3 x = view_to_world_pos(view_position(borrowed * frame.viewport.zw, texelFetch(g_depth, b, 0).r));
+      vec3 m = x - 2.0 * (dot(r.plane.xyz, x) + r.plane.w) * r.plane.xyz;
+      vec2 uv;
+      float depth;
+      if (!project_to_uv((frame.view * vec4(m, 1.0)).xyz, uv, depth)) continue;
+      if (distance(uv * frame.viewport.xy, vec2(p) + 0.5) > 1.5) continue;
+      source = borrowed;
       hole = false;
-      break;
     }
   }
   if (hole) {

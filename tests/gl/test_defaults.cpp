@@ -28,11 +28,11 @@ const RegionFigures& handled(const test::TracerScore& s, const std::string& tech
 }  // namespace
 
 // Correct coverage (traceable pixels claimed with the ideal's colour) on the mirror scenes, for
-// the region each technique handles. Measured: gallery 96.5% (ppr) to 98.7% (dda);
-// gallery:reflectors=8 96.4% (ppr) to 98.5% (dda). Before the auto defaults: linear-binary 8.3%,
-// dda 82.8% on gallery. On the ripples floor (normal-mapped mirror) dda and hiz reach 94.0%
-// and ppr 82.4% (its unfilled holes: the fallback tracer of the defaults issue is what is
-// missing): pinned below their measurements.
+// the region each technique handles. Measured: gallery 97.5% (linear-binary) to 99.1% (ppr);
+// gallery:reflectors=8 97.0% (linear-binary) to 98.7% (ppr). Before the auto defaults:
+// linear-binary 8.3%, dda 82.8% on gallery. On the ripples floor (normal-mapped mirror) dda and
+// hiz reach 94.0% and ppr 83.6% (its unfilled holes: the fallback tracer of the defaults issue
+// is what is missing): pinned below their measurements.
 TEST(Defaults, CorrectCoverageOnMirrorScenes) {
   const std::map<std::pair<std::string, std::string>, double> pinned = {
       {{"gallery:normal_map=ripples", "dda"}, 0.93},
