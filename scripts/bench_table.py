@@ -3,6 +3,7 @@
 
     scripts/bench_table.py bench.json [more.json ...]
     scripts/bench_table.py --regions [--defaults] bench.json [more.json ...]
+    scripts/bench_table.py --summary bench.json   (ms / PSNR vs ideal / correct coverage per technique)
 
 One table per (scene, size): technique, median/min/max ms, time over the floor pass, PSNR,
 PSNR traceable, coverage, non-finite count. Device, clock and revision come from each file.
@@ -109,6 +110,33 @@ def regions(paths, only_defaults=False):
             print()
 
 
+def summary(paths):
+    """One row per (scene, size), one column per technique: median ms, traceable PSNR against the
+    ideal over what the technique handles, correct coverage."""
+    for path in paths:
+        runs = json.load(open(path))["runs"]
+        names = []
+        for run in runs:
+            for r in run["results"]:
+                if r["technique"] not in names:
+                    names.append(r["technique"])
+        print("| scene | size | " + " | ".join(names) + " |")
+        print("|---|---|" + "---:|" * len(names))
+        for run in runs:
+            w, h = run["size"]
+            cells = []
+            for name in names:
+                r = next((r for r in run["results"] if r["technique"] == name), None)
+                if r is None:
+                    cells.append("")
+                    continue
+                f = r["regions"]["planar" if name in ("ppr", "planar") else "all"]
+                t = f["traceable"]
+                cells.append(f"{fmt(r['time_ms']['median'], 3)} ms / {db(t['psnr_ideal'])} / {pct(t['correct_coverage'])}")
+            print(f"| {run['scene']} | {w}x{h} | " + " | ".join(cells) + " |")
+        print()
+
+
 def equal_error(paths, baseline="linear-binary", slack=0.25):
     print("| scene | size | target PSNR traceable dB | technique | fastest variant at target | ms | speed-up vs "
           f"{baseline} |")
@@ -142,7 +170,9 @@ if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit("usage: bench_table.py bench.json [more.json ...]")
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    if "--regions" in sys.argv:
+    if "--summary" in sys.argv:
+        summary(args)
+    elif "--regions" in sys.argv:
         regions(args, only_defaults="--defaults" in sys.argv)
     else:
         main(args)
