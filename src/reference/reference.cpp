@@ -214,13 +214,15 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
         // hard-grazing's horizon, which put points under the floor, so that mirror rays hit
         // the floor itself. The eye ray through the pixel centre (where the rasterizer
         // sampled too) finds the surface exactly. It is taken where it agrees with the depth
-        // to 2%; elsewhere (a silhouette the two see differently) the depth's point stays.
+        // to 2% and hits the object the G-buffer shows; elsewhere (a silhouette the two see
+        // differently, e.g. a mirror's border with its frame 1 cm behind) the depth's point stays.
         RayHit primary;
         {
           const glm::dvec3 to_p = p_ws - eye;
           const double dist = glm::length(to_p);
           primary = bvh_->trace(glm::vec3(eye), glm::vec3(to_p / dist), 0.0f);
-          primary.hit = primary.hit && std::abs(static_cast<double>(primary.t) - dist) <= 0.02 * dist + 1e-4;
+          primary.hit = primary.hit && primary.mesh == material[i * 4 + 3] &&
+                        std::abs(static_cast<double>(primary.t) - dist) <= 0.02 * dist + 1e-4;
           if (primary.hit) p_ws = glm::dvec3(primary.position);
         }
         glm::dvec3 n_vs(normal_rough[i * 4], normal_rough[i * 4 + 1], normal_rough[i * 4 + 2]);
