@@ -8,6 +8,7 @@ SSR_SHARED_BEGIN
 #define PPR_MAX_REFLECTORS 16
 #define SSBO_PPR_REFLECTORS 4
 #define IMG_PPR_INTERMEDIATE 3  // r32ui, cleared to PPR_EMPTY, written with imageAtomicMin
+#define TEX_PPR_FALLBACK 19     // RGBA16F: the fallback tracer's reflection (ppr.fallback != none)
 
 struct PprParams {
   int hole_fill SSR_DEFAULT(2);       // 0: none, 1: 4 neighbours, 2: 8 neighbours
@@ -17,7 +18,7 @@ struct PprParams {
   int edge_fade SSR_DEFAULT(0);       // 1: confidence fades towards the screen edges
   int seed SSR_DEFAULT(0);            // random seed of the per-pixel sample rotation
   int reflector_count SSR_DEFAULT(0); // set by the technique from the scene (not a parameter)
-  int pad;
+  int fallback SSR_DEFAULT(4);        // tracer for what projection cannot serve: 0 none, 1 linear, 2 linear-binary, 3 dda, 4 hiz
 };
 
 // One planar reflector, oriented for the frame: `plane.xyz` faces the camera.

@@ -15,6 +15,11 @@ layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
 layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;  // offset.xy (px), hole before, hole after
 layout(location = 0) uniform uint u_fraction_bits;
+layout(location = 1) uniform int u_fallback;  // 1: the fallback tracer's reflection serves what projection cannot
+layout(binding = TEX_PPR_FALLBACK) uniform sampler2D fallback_tex;
+
+// What this pixel shows where projection has no answer: the fallback tracer's, or nothing.
+vec4 unserved(ivec2 p) { return u_fallback == 1 ? texelFetch(fallback_tex, p, 0) : vec4(0.0); }
 
 // The packed value at q, or PPR_EMPTY off screen.
 uint packed_at(ivec2 q) {
@@ -27,7 +32,7 @@ void main() {
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   GSample g = gbuffer_fetch(p);
   if (!is_reflective(g) || g.reflector == 0u) {
-    imageStore(out_reflection, p, vec4(0.0));
+    imageStore(out_reflection, p, is_reflective(g) ? unserved(p) : vec4(0.0));
     imageStore(out_debug, p, vec4(0.0));
     return;
   }
@@ -60,7 +65,7 @@ void main() {
     }
   }
   if (hole) {
-    imageStore(out_reflection, p, vec4(0.0));
+    imageStore(out_reflection, p, unserved(p));
     imageStore(out_debug, p, vec4(0.0, 0.0, 1.0, 1.0));
     return;
   }
@@ -94,6 +99,11 @@ void main() {
       }
     }
     if (found > 0.0) color = sum / found;
+    else if (u_fallback == 1) {  // the perturbed ray left the plane's solution
+      imageStore(out_reflection, p, unserved(p));
+      imageStore(out_debug, p, vec4(source - (vec2(p) + 0.5), ppr_is_empty(v) ? 1.0 : 0.0, 0.0));
+      return;
+    }
   }
   float a = 1.0;
   if (params.edge_fade != 0) a *= clamp(1.0 - abs(src_uv.x - 0.5) - abs(src_uv.y - 0.5), 0.0, 1.0);

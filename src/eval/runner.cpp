@@ -135,13 +135,13 @@ ScoredFrame::Score ScoredFrame::score(Technique& t) {
   s.error.nonfinite = count_nonfinite(s.reflection.pixels) + count_nonfinite(refraction.pixels) +
                       count_nonfinite(renderer_.read_texture(renderer_.color()).pixels);
   s.breakdown = compute_breakdown(labels_, {&s.display, &s.reflected, &s.confidence}, refs,
-                                  technique_info(t.name()).planar_only);
+                                  t.planar_only());
   return s;
 }
 
 std::vector<HitClass> ScoredFrame::hit_classes_of(const Score& s, const Technique& t) {
   return hit_classes(labels_, {&s.display, &s.reflected, &s.confidence}, references(0),
-                     technique_info(t.name()).planar_only);
+                     t.planar_only());
 }
 
 namespace {

@@ -25,6 +25,8 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
     mirror_.reset();  // rebuilt with the new shaders on the next run
   }
 
+  bool planar_only() const override { return true; }
+
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
     gl::ScopedPass pass(in.timer, "planar");
     const float zero[4] = {0, 0, 0, 0};

@@ -22,6 +22,10 @@ const ParamDesc kTable[] = {
     SSR_PARAM_BOOL(P, normal_maps, "Follow normal-mapped normals: reflection distance times the perturbed reflection vector, reprojected."),
     SSR_PARAM_BOOL(P, edge_fade, "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1)."),
     SSR_PARAM_INT(P, seed, 0, 1000000, "", "Random seed of the rough samples."),
+    SSR_PARAM_CHOICE(P, fallback,
+                     "Tracer (at its defaults) for the reflective pixels projection cannot serve: non-planar surfaces, "
+                     "unfilled holes, normal-mapped rays that leave the plane's solution; none is the thesis's technique.",
+                     "none", "linear", "linear-binary", "dda", "hiz"),
 };
 
 class PprTechnique final : public TechniqueWithParams<P> {
@@ -29,6 +33,8 @@ class PprTechnique final : public TechniqueWithParams<P> {
   PprTechnique() : TechniqueWithParams("ppr", kTable) {}
 
   void load(const gl::ShaderSource& src) override {
+    src_ = src;
+    fallback_.reset();  // rebuilt from the new shaders on the next run
     auto clear = gl::Program::compute(src, "techniques/ppr_clear.comp");
     auto project = gl::Program::compute(src, "techniques/ppr_project.comp");
     auto resolve = gl::Program::compute(src, "techniques/ppr_resolve.comp");
@@ -38,6 +44,9 @@ class PprTechnique final : public TechniqueWithParams<P> {
   }
 
   bool writes_debug() const override { return true; }
+  // With a fallback tracer, its refraction of glass pixels stands.
+  bool writes_refraction() const override { return params_.fallback != 0; }
+  bool planar_only() const override { return params_.fallback == 0; }
 
   void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
     const Scene& scene = in.scene;
@@ -63,6 +72,21 @@ class PprTechnique final : public TechniqueWithParams<P> {
       intermediate_ = gl::Texture2D("ppr intermediate", GL_R32UI, in.width, in.height);
     const GLuint bits = shared::ppr_fraction_bits(static_cast<GLuint>(in.width), static_cast<GLuint>(in.height));
 
+    // The hybrid: the fallback tracer first (over the whole frame, for now), into its own image.
+    if (params_.fallback != 0) {
+      const ParamSet table = params();
+      const std::string name = table.to_string(static_cast<std::size_t>(table.find("fallback")));
+      if (!fallback_ || fallback_->name() != name) {
+        fallback_ = create_technique(name);
+        fallback_->load(src_);
+      }
+      if (fallback_tex_.width() != in.width || fallback_tex_.height() != in.height)
+        fallback_tex_ = gl::Texture2D("ppr fallback", GL_RGBA16F, in.width, in.height);
+      fallback_->run(in, fallback_tex_);
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      glBindTextureUnit(TEX_PPR_FALLBACK, fallback_tex_.id());
+    }
+
     bind_params();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
     glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
@@ -80,6 +104,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
     {
       gl::ScopedPass pass(in.timer, "ppr resolve");
       glProgramUniform1ui(resolve_.id(), 0, bits);
+      glProgramUniform1i(resolve_.id(), 1, params_.fallback != 0 ? 1 : 0);
       glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       resolve_.dispatch_2d(in.width, in.height);
     }
@@ -87,7 +112,9 @@ class PprTechnique final : public TechniqueWithParams<P> {
 
  private:
   gl::Program clear_, project_, resolve_;
-  gl::Texture2D intermediate_;
+  gl::ShaderSource src_;
+  std::unique_ptr<Technique> fallback_;
+  gl::Texture2D intermediate_, fallback_tex_;
   gl::Buffer reflectors_;
 };
 

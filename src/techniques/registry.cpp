@@ -23,11 +23,11 @@ const std::vector<TechniqueInfo>& technique_registry() {
       {"dda", "McGuire & Mara: perspective-correct per-pixel screen-space DDA with stride, jitter and refinement", make_dda_technique},
       {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
       {"ppr", "Pixel-Projected Reflections: planar reflectors by projection (imageAtomicMin), hole patching",
-       make_ppr_technique, /*planar_only=*/true},
+       make_ppr_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",
-       make_planar_technique, /*planar_only=*/true},
+       make_planar_technique},
   };
   return registry;
 }

@@ -55,15 +55,15 @@ class Technique {
   virtual bool writes_debug() const { return false; }       // steps, hit share, distance (IMG_OUT2)
   virtual bool writes_refraction() const { return false; }  // glass pixels' refraction (IMG_REFRACTION)
   virtual int composite_blend() const { return 0; }       // 0 standard, 1 Roberts (mix(lit, refl, a))
+  // Handles planar reflector pixels only (ppr without a fallback, the planar oracle): the
+  // breakdown reports every other pixel as not handled instead of scoring what it leaves there.
+  virtual bool planar_only() const { return false; }
 };
 
 struct TechniqueInfo {
   std::string name;
   std::string description;  // one line for `ssrlab techniques`
   std::function<std::unique_ptr<Technique>()> create;  // no GL needed
-  // Handles planar reflector pixels only (PPR, the planar oracle): the breakdown reports every
-  // other pixel as not handled instead of scoring the environment it leaves there.
-  bool planar_only = false;
 };
 
 // Every technique, in the order `ssrlab techniques` lists them.

@@ -12,6 +12,7 @@
 #include "render/renderer.h"
 #include "scene/meshgen.h"
 #include "scene/scene_io.h"
+#include "core/cli_common.h"
 #include "techniques/technique.h"
 
 using namespace ssr;
@@ -158,14 +159,22 @@ TEST(Verdicts, ObjectIdsAndRegionsFollowTheGBuffer) {
   EXPECT_TRUE(s.breakdown.find("rough")->traceable.noise_floor_psnr || s.breakdown.find("rough")->traceable.pixels == 0);
   EXPECT_TRUE(s.breakdown.find("glossy")->traceable.noise_floor_psnr);
   EXPECT_FALSE(s.breakdown.find("mirror")->traceable.noise_floor_psnr);
-  // ppr handles the reflectors only.
+  // ppr without a fallback (the thesis's technique) handles the reflectors only.
   auto ppr = create_technique("ppr");
+  apply_assignments(*ppr, {"ppr.fallback=none"});
   ppr->load(r.shaders());
   const ScoredFrame::Score p = frame.score(*ppr);
   EXPECT_FALSE(p.breakdown.find("other")->handled);
   EXPECT_EQ(p.breakdown.find("other")->handled_pixels, 0u);
   EXPECT_FALSE(p.breakdown.find("other")->traceable.psnr);
   EXPECT_TRUE(p.breakdown.find("planar")->handled);
+  // With its default fallback (hiz) it handles everything, and the other pixels are hiz's.
+  auto hybrid = create_technique("ppr");
+  hybrid->load(r.shaders());
+  const ScoredFrame::Score hp = frame.score(*hybrid);
+  EXPECT_TRUE(hp.breakdown.find("other")->handled);
+  ASSERT_TRUE(hp.breakdown.find("other")->traceable.psnr_ideal && s.breakdown.find("other")->traceable.psnr_ideal);
+  EXPECT_NEAR(*hp.breakdown.find("other")->traceable.psnr_ideal, *s.breakdown.find("other")->traceable.psnr_ideal, 1e-9);
   test::expect_no_gl_errors();
 }
 
