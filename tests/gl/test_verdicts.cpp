@@ -321,10 +321,9 @@ TEST(Verdicts, GlassTruthFollowsAnalyticRefraction) {
 // from a row of pixel centres: see Reference.PlanarAgreesWithRayTracedMirror). Pedestal's mirror was 34.2 dB at 640x360 with
 // 84.5% of its pixels within 1/255, because the truth shaded hits without their normal maps
 // (the stone pedestal seen in the mirror); with them, 98.5% agree to 1/255 and the PSNR off
-// edges is 58.6 dB. What is left is about ten pixels, on the mirror's border and on the chrome
-// ball in the mirror, where one oracle shows the ball's point-light highlight and the other does
-// not (GGX clamped at alpha 0.02 is so narrow that, most likely, the raster's and Embree's
-// interpolated normals, equal up to rounding, put it a pixel apart; not verified further):
+// edges is 58.6 dB. What is left is eleven isolated pixels (640x360) inside the mirror where
+// one oracle sees a surface (the frame's dark brown, the ball, its highlight) and the other the
+// sky or another surface: not explained yet (Embree's watertight mode changes none of them);
 // they hold the whole-set PSNR near 35 dB there. Here:
 // gallery 52.2 dB, 54.4 dB off edges, 85.4% within 1/255 (the brick texture's filtering differs
 // by a level or so between raster and ray cone); pedestal 36.9 dB, 57.9 dB off edges, 98.1%.
