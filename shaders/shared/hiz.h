@@ -10,7 +10,7 @@ SSR_SHARED_BEGIN
 
 struct HizParams {
   RayOptions ray SSR_DEFAULT((RayOptions{}));
-  int max_iterations SSR_DEFAULT(256);  // cap on pyramid cell visits per ray (128 left pedestal 6.8 dB short of 512)
+  int max_iterations SSR_DEFAULT(0);    // cap on pyramid cell visits per ray; 0 auto (half the image diagonal)
   int start_level SSR_DEFAULT(0);       // pyramid level of the first step
   int max_level SSR_DEFAULT(10);        // coarsest level the trace climbs to
   float thickness SSR_DEFAULT(0.15f);   // how far behind the depth buffer still counts (world units)

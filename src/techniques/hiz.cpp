@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 #include "shared/hiz.h"
 #include "techniques/tracer.h"
@@ -50,8 +51,9 @@ namespace {
 
 using P = shared::HizParams;
 const std::vector<ParamDesc> kTable = with_ray_options<P>({
-    SSR_PARAM_INT(P, max_iterations, 1, 1024, "iterations",
-                  "Cap on pyramid cell visits per ray; a ray still marching at the cap is a miss."),
+    with_auto(SSR_PARAM_INT(P, max_iterations, 1, 4096, "iterations",
+                            "Cap on pyramid cell visits per ray; a ray still marching at the cap is a miss; "
+                            "auto: half the image diagonal in pixels.")),
     SSR_PARAM_INT(P, start_level, 0, 8, "level", "Pyramid level of the first step after leaving the origin pixel."),
     SSR_PARAM_INT(P, max_level, 0, 15, "level", "Coarsest pyramid level the trace climbs to (capped by the chain)."),
     SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
@@ -60,8 +62,11 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
                               "Length of the traced ray; auto: the scene's bounding-box diagonal.")),
 });
 
+// The visits a ray needs grow with the resolution: 256 reached 98% of pedestal's wall mirror at
+// 640x360 but 47% at 1920x1080 (1024: 99.8%).
 void resolve(P& p, const AutoContext& c) {
   if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+  if (p.max_iterations == 0) p.max_iterations = std::clamp(static_cast<int>(std::ceil(0.5f * c.image_diagonal)), 1, 4096);
 }
 
 class HizTechnique : public TracerTechnique<P> {
