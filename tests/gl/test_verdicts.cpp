@@ -37,6 +37,23 @@ void add_mesh(Scene& s, Mesh m, const std::string& name, int mat, const glm::mat
   s.meshes.push_back(std::move(m));
 }
 
+Light point_light(glm::vec3 position, float intensity) {
+  Light l;
+  l.position = position;
+  l.intensity = intensity;
+  l.range = 30.0f;
+  return l;
+}
+
+Camera camera(const char* name, glm::vec3 position, glm::vec3 target, float fov_y_deg) {
+  Camera c;
+  c.name = name;
+  c.position = position;
+  c.target = target;
+  c.fov_y_deg = fov_y_deg;
+  return c;
+}
+
 // A mirror floor (reflector 1) with a red box, a green sphere and a thin yellow pole standing
 // on it, seen from low: their bases meet their reflections in contact lines across the frame.
 // Red, green and yellow are diffuse only (reflectance 0), so the lit colour at a point is what
@@ -54,17 +71,8 @@ Scene contact_scene() {
            glm::rotate(glm::translate(glm::mat4(1.0f), {-1.2f, 0.5f, 0.0f}), 0.5f, glm::vec3(0, 1, 0)));
   add_mesh(s, meshgen::sphere(0.5f, 32, 16), "sphere", 2, glm::translate(glm::mat4(1.0f), {0.6f, 0.5f, -0.5f}));
   add_mesh(s, meshgen::cylinder(0.08f, 1.5f), "pole", 3, glm::translate(glm::mat4(1.0f), {1.7f, 0.0f, 0.6f}));
-  Light l;
-  l.position = {1.0f, 4.0f, 3.0f};
-  l.intensity = 30.0f;
-  l.range = 30.0f;
-  s.lights.push_back(l);
-  Camera c;
-  c.name = "low";
-  c.position = {0.0f, 0.45f, 4.0f};
-  c.target = {0.0f, 0.35f, 0.0f};
-  c.fov_y_deg = 50.0f;
-  s.cameras.push_back(c);
+  s.lights.push_back(point_light({1.0f, 4.0f, 3.0f}, 30.0f));
+  s.cameras.push_back(camera("low", {0.0f, 0.45f, 4.0f}, {0.0f, 0.35f, 0.0f}, 50.0f));
   validate(s);
   return s;
 }
@@ -206,12 +214,7 @@ TEST(Verdicts, MultiBounceTruthBetweenFacingMirrors) {
   s.environment.type = Environment::Type::Constant;
   s.environment.constant = glm::vec3(0.5f);
   s.ambient = 0.0f;
-  Camera c;
-  c.name = "between";
-  c.position = {0.4f, 1.5f, 2.0f};
-  c.target = {0.0f, 1.5f, 0.0f};
-  c.fov_y_deg = 60.0f;
-  s.cameras.push_back(c);
+  s.cameras.push_back(camera("between", {0.4f, 1.5f, 2.0f}, {0.0f, 1.5f, 0.0f}, 60.0f));
   validate(s);
 
   Renderer r(s, 96, 64);
@@ -268,16 +271,8 @@ TEST(Verdicts, GlassTruthFollowsAnalyticRefraction) {
   const glm::vec3 center(0.0f, 0.0f, -1.0f);
   add_mesh(s, meshgen::plane({2.4f, 2.4f}), "glass", 2,
            glm::translate(glm::mat4(1.0f), center) * glm::rotate(glm::mat4(1.0f), tilt, glm::vec3(0, 1, 0)) * face_z);
-  Light l;
-  l.position = {0.0f, 1.0f, 1.0f};
-  l.intensity = 20.0f;
-  l.range = 30.0f;
-  s.lights.push_back(l);
-  Camera c;
-  c.name = "front";
-  c.position = {0.0f, 0.0f, 2.0f};
-  c.target = {0.0f, 0.0f, -10.0f};
-  c.fov_y_deg = 60.0f;
+  s.lights.push_back(point_light({0.0f, 1.0f, 1.0f}, 20.0f));
+  const Camera c = camera("front", {0.0f, 0.0f, 2.0f}, {0.0f, 0.0f, -10.0f}, 60.0f);
   s.cameras.push_back(c);
   validate(s);
 
