@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -156,6 +157,17 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     reflective_mesh[m] = scene.meshes[m].reflector > 0 ||
                          std::max({f0.x, f0.y, f0.z}) >= in.renderer.settings.reflective_f0;
   }
+  // Writes a ray's hit into its segment: position and material, the shading normal with the
+  // ray cone's texture footprint (`cone_width`: the cone's width at the hit, world units), uv
+  // and tangent. The hit's pixel (segment 0 only) is the caller's.
+  auto record_hit = [&](shared::ReferenceSample& s, const RayHit& hit, double cone_width) {
+    s.position = glm::vec4(hit.position, static_cast<float>(scene.meshes[static_cast<std::size_t>(hit.mesh)].material));
+    const double footprint = cone_width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
+                             static_cast<double>(hit.uv_density);
+    s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+    s.hit_pixel = glm::vec4(0, 0, hit.uv);
+    s.tangent = hit.tangent;
+  };
   auto follow_bounces = [&](RayHit hit, glm::vec3 dir, double dist, shared::ReferenceSample* seg, unsigned x,
                             unsigned y, unsigned k) {
     for (std::size_t b = 1; b < bounces; ++b) {
@@ -180,12 +192,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
         return;
       }
       dist += nh.t;
-      s.position = glm::vec4(nh.position, static_cast<float>(scene.meshes[static_cast<std::size_t>(nh.mesh)].material));
-      const double footprint = pixel_angle * dist / std::max(static_cast<double>(nh.cos_incidence), 0.05) *
-                               static_cast<double>(nh.uv_density);
-      s.normal = glm::vec4(nh.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
-      s.hit_pixel = glm::vec4(0, 0, nh.uv);
-      s.tangent = nh.tangent;
+      record_hit(s, nh, pixel_angle * dist);
       hit = nh;
       dir = next;
     }
@@ -259,19 +266,13 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
             ++sky;
             continue;
           }
-          const int mat = scene.meshes[static_cast<std::size_t>(hit.mesh)].material;
-          s.position = glm::vec4(hit.position, static_cast<float>(mat));
           // GL picks the LOD of the longer footprint axis; off the view axis a pixel subtends
           // cos(phi) times the central angle along that axis.
-          const double width = pixel_angle * cos_phi * (cam_dist + hit.t);
-          const double footprint = width / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
-                                   static_cast<double>(hit.uv_density);
-          s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+          record_hit(s, hit, pixel_angle * cos_phi * (cam_dist + hit.t));
           glm::vec2 hp(0);
           const bool visible = visible_on_screen(hit, material[i * 4] > 0 ? material[i * 4 + 3] : -1, hp);
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
-          s.tangent = hit.tangent;
           (visible ? traceable : missing)++;
           if (bounces > 1)
             follow_bounces(hit, dir, cam_dist + hit.t, &samples[first_segment], static_cast<unsigned>(x),
@@ -324,6 +325,22 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   glProgramUniform1i(program_.id(), 1, static_cast<int>(bounces));
 
   std::vector<shared::ReferencePixel> pixels;
+  // Shades `pixels` from `samples` into the images bound at IMG_REF_TRUTH and IMG_REF_IDEAL.
+  // The buffers live for this call only: it waits for the GPU.
+  auto shade = [&](const char* what) {
+    gl::Buffer sbuf = gl::make_buffer(std::string(what) + " samples",
+                                      static_cast<GLsizeiptr>(samples.size() * sizeof(shared::ReferenceSample)),
+                                      samples.data(), 0);
+    gl::Buffer pbuf = gl::make_buffer(std::string(what) + " pixels",
+                                      static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
+                                      pixels.data(), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
+    glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
+    glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glFinish();
+  };
   while (batch_y1 < h) {
     // Whole rows, as many as fit in one batch (at least one).
     batch_y0 = batch_y1;
@@ -353,18 +370,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
                                    static_cast<int>(i / static_cast<std::size_t>(w)),
                                    static_cast<int>(pixel_start[i] - batch_first), n)});
     }
-    gl::Buffer sbuf = gl::make_buffer("reference samples",
-                                      static_cast<GLsizeiptr>(samples.size() * sizeof(shared::ReferenceSample)),
-                                      samples.data(), 0);
-    gl::Buffer pbuf = gl::make_buffer("reference pixels",
-                                      static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
-                                      pixels.data(), 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
-    glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
-    glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glFinish();  // the batch's buffers die at the end of this scope
+    shade("reference");
   }
 
   // --- refraction through transparent surfaces, with the tracers' thin-surface model ----------
@@ -412,15 +418,11 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
         if (!hit.hit) {
           s.position = glm::vec4(0, 0, 0, -1);
         } else {
-          s.position = glm::vec4(hit.position, static_cast<float>(scene.meshes[static_cast<std::size_t>(hit.mesh)].material));
-          const double footprint = pixel_angle * (cam_dist + hit.t) / std::max(static_cast<double>(hit.cos_incidence), 0.05) *
-                                   static_cast<double>(hit.uv_density);
-          s.normal = glm::vec4(hit.normal, static_cast<float>(std::log2(std::max(footprint, 1e-30))));
+          record_hit(s, hit, pixel_angle * (cam_dist + hit.t));
           glm::vec2 hp(0);
           const bool visible = visible_on_screen(hit, -1, hp);
           s.direction.w = visible ? 1.0f : 0.0f;
           s.hit_pixel = glm::vec4(hp, hit.uv);
-          s.tangent = hit.tangent;
           c = visible ? PixelClass::Traceable : PixelClass::Missing;
           if (bounces > 1)
             follow_bounces(hit, dir, cam_dist + hit.t, &samples[g * bounces], static_cast<unsigned>(x),
@@ -434,22 +436,11 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     for (auto& t : pool) t.join();
     rays_ += pixels.size();
     if (!pixels.empty()) {
-      gl::Buffer sbuf = gl::make_buffer("reference refraction samples",
-                                        static_cast<GLsizeiptr>(samples.size() * sizeof(shared::ReferenceSample)),
-                                        samples.data(), 0);
-      gl::Buffer pbuf = gl::make_buffer("reference refraction pixels",
-                                        static_cast<GLsizeiptr>(pixels.size() * sizeof(shared::ReferencePixel)),
-                                        pixels.data(), 0);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_SAMPLES, sbuf.id());
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_REF_PIXELS, pbuf.id());
       glBindImageTexture(IMG_REF_TRUTH, in.renderer.refraction().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       glBindImageTexture(IMG_REF_IDEAL, ideal_refraction_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      glProgramUniform1i(program_.id(), 0, static_cast<int>(pixels.size()));
       glProgramUniform1i(program_.id(), 2, 1);
-      glDispatchCompute(static_cast<GLuint>((pixels.size() + 63) / 64), 1, 1);
+      shade("reference refraction");
       glProgramUniform1i(program_.id(), 2, 0);
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glFinish();
     }
   }
 
