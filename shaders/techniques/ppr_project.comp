@@ -2,7 +2,7 @@
 // sees that mirror image through the reflector, the destination pixel keeps (atomic min) the
 // packed offset back to this pixel: the closest such source wins (shared/ppr_packing.h).
 #include "common/gbuffer.glsl"
-#include "shared/ppr.h"
+#include "common/ppr_mirror.glsl"
 #include "shared/ppr_packing.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -10,18 +10,6 @@ layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { PprParams params; 
 layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprReflector reflectors[]; };
 layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform coherent uimage2D intermediate;
 layout(location = 0) uniform uint u_fraction_bits;
-
-// Where the mirror image (across r) of view-space point p lands, in continuous pixels.
-bool mirror_to_pixel(vec3 p_vs, PprReflector r, out vec2 px) {
-  vec3 x = view_to_world_pos(p_vs);
-  vec3 m = x - 2.0 * (dot(r.plane.xyz, x) + r.plane.w) * r.plane.xyz;
-  vec2 uv;
-  float depth;
-  px = vec2(0.0);
-  if (!project_to_uv((frame.view * vec4(m, 1.0)).xyz, uv, depth)) return false;
-  px = uv * frame.viewport.xy;
-  return true;
-}
 
 // How the mirror image moves on screen per source pixel (columns: source +x, +y), to first
 // order from the source's tangent plane (its neighbours' eye rays); false where degenerate.

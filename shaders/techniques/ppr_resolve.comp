@@ -3,7 +3,7 @@
 // reflector, the thesis's approximation: keep the reflection distance of the mirror solution
 // and follow the perturbed (or GGX-sampled) reflection vector that far, then reproject.
 #include "common/gbuffer.glsl"
-#include "shared/ppr.h"
+#include "common/ppr_mirror.glsl"
 #include "shared/ppr_packing.h"
 #include "shared/sampling.h"
 
@@ -54,12 +54,9 @@ void main() {
       if (ppr_is_empty(w)) continue;
       vec2 borrowed = vec2(p + dirs[i]) + 0.5 + ppr_unpack(w, u_fraction_bits);
       ivec2 b = clamp(ivec2(borrowed), ivec2(0), ivec2(frame.viewport.xy) - 1);
-      vec3 x = view_to_world_pos(view_position(borrowed * frame.viewport.zw, texelFetch(g_depth, b, 0).r));
-      vec3 m = x - 2.0 * (dot(r.plane.xyz, x) + r.plane.w) * r.plane.xyz;
-      vec2 uv;
-      float depth;
-      if (!project_to_uv((frame.view * vec4(m, 1.0)).xyz, uv, depth)) continue;
-      if (distance(uv * frame.viewport.xy, vec2(p) + 0.5) > 1.5) continue;
+      vec2 back;
+      if (!mirror_to_pixel(view_position(borrowed * frame.viewport.zw, texelFetch(g_depth, b, 0).r), r, back)) continue;
+      if (distance(back, vec2(p) + 0.5) > 1.5) continue;
       source = borrowed;
       hole = false;
     }
