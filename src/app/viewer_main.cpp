@@ -73,7 +73,7 @@ bool on_demand(const Technique& t) { return t.name() == "reference"; }
 struct Side {
   std::unique_ptr<Technique> technique;
   gl::Texture2D copy;       // RGBA8 display image of the last frame it ran
-  RgbaImageF values;        // its final image as display values (final view only; else empty)
+  gl::Texture2D color;      // RGBA16F composited colour of that frame (the A-vs-B figure reads it)
   bool valid = false;       // `copy` holds an image of the current size
   std::string shown_key;    // the frame key of what `copy` shows
   int request = 0;          // on-demand: 2 = asked (UI shows "computing..."), 1 = run this frame
@@ -228,7 +228,6 @@ class Viewer {
   std::string status_;
   bool status_error_ = false;
   std::string psnr_key_;
-  std::vector<bool> reflective_;  // the frame's reflective pixels (row 0 = top)
   double psnr_ = 0;
   bool psnr_valid_ = false;
   glm::dvec2 last_mouse_{0};
@@ -775,6 +774,7 @@ void Viewer::render() {
     composed_ = gl::Texture2D("viewer composed", GL_RGBA8, fb_w_, fb_h_);
     for (Side& s : sides_) {
       s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, fb_w_, fb_h_);
+      s.color = gl::Texture2D("viewer side colour", GL_RGBA16F, fb_w_, fb_h_);
       const std::uint8_t black[4] = {0, 0, 0, 255};
       glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
       s.valid = false;
@@ -810,13 +810,10 @@ void Viewer::render() {
     renderer_->run_technique(*s.technique, s.timer.get());
     renderer_->composite_and_display(static_cast<ViewMode>(view_), s.timer.get());
     s.timer->end_frame();
-    // The figures come from the shared metric code over compare's pixels: the final image's
-    // display values on the reflective pixels.
-    s.values = view_ == VIEW_FINAL ? display_values(renderer_->read_texture(renderer_->color()), renderer_->settings.exposure)
-                                   : RgbaImageF{};
-    if (i == 0 || reflective_.size() != s.values.pixels.size() / 4) reflective_ = reflective_pixels(*renderer_);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
     glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0,
+                       0, 0, fb_w_, fb_h_, 1);
+    glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0,
                        0, 0, fb_w_, fb_h_, 1);
     s.valid = true;
     s.shown_key = key;
@@ -853,11 +850,14 @@ void Viewer::render() {
   if (compare_ != CompareOff && sides_[0].valid && sides_[1].valid) {
     const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key;
     if (key != psnr_key_) {
-      const RgbaImageF& a = sides_[0].values;
-      const RgbaImageF& b = sides_[1].values;
-      const bool comparable = !a.pixels.empty() && a.pixels.size() == b.pixels.size() &&
-                              reflective_.size() * 4 == a.pixels.size();
-      const std::optional<double> p = comparable ? psnr_where(a, b, reflective_) : std::nullopt;
+      // The shared metric code over compare's pixels: the final image's display values on the
+      // reflective pixels of this frame's G-buffer (both sides ran on it: the key holds the frame).
+      std::optional<double> p;
+      if (view_ == VIEW_FINAL) {
+        const float exposure = renderer_->settings.exposure;
+        p = psnr_where(display_values(renderer_->read_texture(sides_[0].color), exposure),
+                       display_values(renderer_->read_texture(sides_[1].color), exposure), reflective_pixels(*renderer_));
+      }
       psnr_valid_ = p.has_value();
       psnr_ = p.value_or(0.0);
       psnr_key_ = key;
