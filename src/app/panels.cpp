@@ -36,6 +36,8 @@ bool draw_param_panel(ParamSet& params) {
                                 : (d.type == ParamType::Float ? std::sqrt(d.min * d.max) : std::round(std::sqrt(d.min * d.max))));
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: %s", d.help);
       ImGui::SameLine();
+      // The checkbox takes its room from the widget, so the row keeps its width.
+      ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
     }
     ImGui::BeginDisabled(params.is_auto(i));
     switch (d.type) {
