@@ -10,6 +10,7 @@ pkgs=(
   libgtest-dev                      # tests
   clang-14 libclang-rt-14-dev       # fuzz targets (tests/fuzz): libclang_rt.fuzzer, asan, ubsan
   xvfb xauth                        # viewer test in a real X window
+  ffmpeg                            # ssrlab sequence --video (H.264 through libx264); tests/unit/test_video.cpp
 )
 missing=()
 for p in "${pkgs[@]}"; do
