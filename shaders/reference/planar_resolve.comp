@@ -3,7 +3,7 @@
 #include "common/gbuffer.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 12) uniform sampler2D mirror_lit;
+layout(binding = TEX_PLANAR_MIRROR_LIT) uniform sampler2D mirror_lit;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
 layout(location = 0) uniform mat4 u_mirror_view_proj;
 layout(location = 1) uniform uint u_reflector;  // 1-based id in the G-buffer

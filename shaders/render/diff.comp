@@ -1,10 +1,12 @@
 // Difference heat map for the viewer: |A - B| per pixel (mean over RGB of the display values),
 // scaled so that u_full_scale is the hottest colour. Pixels where A and B agree show A as a dim
 // grey, so that the picture keeps its context.
+#include "shared/bindings.h"
+
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 20) uniform sampler2D a_tex;  // RGBA8 display image of technique A
-layout(binding = 21) uniform sampler2D b_tex;  // RGBA8 display image of technique B
-layout(binding = 3, rgba8) uniform writeonly image2D out_heat;
+layout(binding = TEX_DIFF_A) uniform sampler2D a_tex;  // RGBA8 display image of technique A
+layout(binding = TEX_DIFF_B) uniform sampler2D b_tex;  // RGBA8 display image of technique B
+layout(binding = IMG_DIFF_OUT, rgba8) uniform writeonly image2D out_heat;
 layout(location = 0) uniform float u_full_scale;
 
 // Black -> purple -> orange -> yellow (as display.comp's debug heat maps).

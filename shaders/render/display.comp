@@ -15,6 +15,12 @@ layout(location = 0) uniform int u_view;
 layout(binding = TEX_DEBUG) uniform sampler2D debug_tex;
 layout(binding = TEX_GLASS_SURFACE) uniform sampler2D glass_surface_tex;
 layout(binding = TEX_REFRACTION) uniform sampler2D refraction_tex;
+layout(binding = TEX_MOTION) uniform sampler2D motion_tex;
+
+// Hue from an angle (radians), full saturation.
+vec3 hue(float a) {
+  return clamp(abs(fract(a / 6.28318530718 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
+}
 
 // Black -> purple -> orange -> yellow, for the debug heat maps.
 vec3 heat(float t) {
@@ -65,6 +71,11 @@ void main() {
     else if (u_view == VIEW_DISTANCE) v = heat(texelFetch(debug_tex, p, 0).z / 20.0);
     else if (u_view == VIEW_OFFSETS) v = vec3(0.5 + texelFetch(debug_tex, p, 0).xy * frame.viewport.zw, 0.5);
     else if (u_view == VIEW_HOLES) v = vec3(texelFetch(debug_tex, p, 0).zw, 0.0);
+    else if (u_view == VIEW_MOTION) {
+      vec2 m = texelFetch(motion_tex, p, 0).xy;
+      float len = length(m);
+      v = len > 1e-4 ? hue(atan(m.y, m.x)) * clamp(len / 16.0, 0.0, 1.0) : vec3(0.0);
+    }
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);

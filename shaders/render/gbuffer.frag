@@ -1,7 +1,8 @@
 // G-buffer fill: view-space normal + roughness, albedo + metallic, material ids, flags and the
-// object (mesh) id.
+// object (mesh) id, motion vectors.
 #include "common/frame.glsl"
 #include "common/brdf.glsl"
+#include "common/motion.glsl"
 
 layout(std140, binding = UBO_DRAW) uniform DrawBlock { DrawUniforms draw; };
 layout(binding = TEX_ALBEDO_MAP) uniform sampler2D albedo_map;
@@ -10,11 +11,14 @@ layout(binding = TEX_NORMAL_MAP) uniform sampler2D normal_map;
 in vec3 v_normal_vs;
 in vec4 v_tangent_vs;
 in vec2 v_uv;
+in vec4 v_clip;
+in vec4 v_prev_clip;
 
 layout(location = 0) out vec4 out_normal_roughness;
 layout(location = 1) out vec4 out_albedo_metallic;
 layout(location = 2) out uvec4 out_material;
 layout(location = 3) out vec4 out_emission;
+layout(location = 4) out vec2 out_motion;
 
 void main() {
   vec3 n = v_normal_vs;
@@ -45,6 +49,7 @@ void main() {
   if (draw.ids.w != 0) flags |= MATERIAL_FLAG_TRANSPARENT;
   if (draw.ids.z != 0) flags |= MATERIAL_FLAG_NORMAL_MAPPED;
   out_emission = vec4(draw.emission.rgb, 0.0);
+  out_motion = motion_pixels(v_clip, v_prev_clip);
   out_normal_roughness = vec4(n, draw.material.x);
   out_albedo_metallic = vec4(albedo, metallic);
   out_material = uvec4(uint(draw.ids.x), uint(round(clamp(reflectance, 0.0, 1.0) * 255.0)), flags,

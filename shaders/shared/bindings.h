@@ -1,4 +1,6 @@
-// Named binding slots, shared by the C++ passes and the GLSL that reads them.
+// Every binding slot, by name, shared by the C++ passes and the GLSL that reads them. No pass
+// uses a raw number; tests/unit/test_bindings.cpp checks that each kind's slots (and ranges) do
+// not overlap and that no source file binds a literal unit.
 #pragma once
 #include "shared/interop.h"
 
@@ -8,9 +10,13 @@
 #define UBO_TECHNIQUE 2  // the running technique's Params struct (shared/<technique>.h)
 
 // Shader storage buffers
-#define SSBO_LIGHTS 0    // GpuLight[]
+#define SSBO_LIGHTS 0          // GpuLight[]
+#define SSBO_REF_SAMPLES 1     // reference: ReferenceSample[] (shared/reference.h)
+#define SSBO_REF_PIXELS 2      // reference: ReferencePixel[]
+#define SSBO_REF_MATERIALS 3   // reference: ReferenceMaterial[]
+#define SSBO_PPR_REFLECTORS 4  // ppr: PprReflector[] (shared/ppr.h)
 
-// Textures (texture units)
+// Textures (texture units). The frame's resources:
 #define TEX_DEPTH 0             // D32F reversed-Z
 #define TEX_NORMAL_ROUGHNESS 1  // RGBA16F view-space normal, perceptual roughness
 #define TEX_ALBEDO_METALLIC 2   // RGBA8 linear albedo, metallic
@@ -21,18 +27,35 @@
 #define TEX_EMISSION 7          // RGBA16F emitted radiance (G-buffer)
 #define TEX_ALBEDO_MAP 8        // material albedo texture (G-buffer draw)
 #define TEX_NORMAL_MAP 9        // material normal map (G-buffer draw)
-#define TEX_HIZ 11              // R32F Hi-Z pyramid, max (= closest, reversed-Z) depth per cell
-#define TEX_BACK_DEPTH 13       // D32F depth of the nearest back faces (techniques that ask)
-#define TEX_DEBUG 14            // RGBA16F tracer debug: steps, hit share, hit distance
-#define TEX_GLASS_DEPTH 15      // D32F nearest transparent surface (else the opaque depth)
-#define TEX_GLASS_SURFACE 16    // RGBA16F view-space normal, ior (w = 0: no transparent surface)
-#define TEX_GLASS_TINT 17       // RGBA8 transmission tint
-#define TEX_REFRACTION 18       // RGBA16F technique refraction: radiance, confidence
+#define TEX_HIZ 10              // R32F Hi-Z pyramid, max (= closest, reversed-Z) depth per cell
+#define TEX_BACK_DEPTH 11       // D32F depth of the nearest back faces (techniques that ask)
+#define TEX_DEBUG 12            // RGBA16F technique debug image (display.comp reads its views)
+#define TEX_GLASS_DEPTH 13      // D32F nearest transparent surface (else the opaque depth)
+#define TEX_GLASS_SURFACE 14    // RGBA16F view-space normal, ior (w = 0: no transparent surface)
+#define TEX_GLASS_TINT 15       // RGBA8 transmission tint
+#define TEX_REFRACTION 16       // RGBA16F technique refraction: radiance, confidence
+#define TEX_MOTION 17           // RG16F motion vectors (shared/frame.h: FrameUniforms.time)
+#define TEX_PREV_LIT 18         // history: the previous frame's lit colour
+#define TEX_PREV_COLOR 19       // history: the running technique's previous composited colour
+#define TEX_PREV_DEPTH 20       // history: the previous frame's depth
+#define TEX_PREV_NORMAL_ROUGHNESS 21  // history: the previous frame's normal + roughness
+// Technique-private and tool textures:
+#define TEX_PPR_FALLBACK 22     // ppr: the fallback tracer's reflection (ppr.fallback != none)
+#define TEX_PLANAR_MIRROR_LIT 23  // planar oracle: the mirrored camera's lit colour
+#define TEX_DIFF_A 24           // viewer difference pass: side A's display image
+#define TEX_DIFF_B 25           // viewer difference pass: side B's display image
+#define TEX_REF_MAP0 26         // reference: units TEX_REF_MAP0 .. + REFERENCE_MAX_TEXTURES - 1
+#define REFERENCE_MAX_TEXTURES 8  // albedo and normal maps the reference's shading can sample
 
-// Images (image units)
-#define IMG_OUT 0
-#define IMG_OUT2 1
-#define IMG_REFRACTION 2  // techniques write the refracted radiance of transparent pixels here
+// Images (image units; GL guarantees 8)
+#define IMG_OUT 0               // the running pass's main output
+#define IMG_OUT2 1              // its second output (techniques: the debug image)
+#define IMG_REFRACTION 2        // techniques write the refracted radiance of transparent pixels here
+#define IMG_PPR_INTERMEDIATE 3  // ppr: r32ui, cleared to PPR_EMPTY, written with imageAtomicMin
+#define IMG_MOTION 4            // the lighting pass writes the background's motion vectors
+#define IMG_REF_TRUTH 5         // reference: the truth's reflection
+#define IMG_REF_IDEAL 6         // reference: the screen-space ideal
+#define IMG_DIFF_OUT 7          // viewer difference pass: the heat map
 
 // G-buffer material flags (TEX_MATERIAL.z)
 #define MATERIAL_FLAG_REFLECTIVE 1u

@@ -18,4 +18,5 @@
 #define VIEW_OFFSETS 13     // PPR: decoded offset to the source pixel as colour (0.5 = none)
 #define VIEW_HOLES 14       // PPR: red = hole before patching, yellow = still a hole after
 #define VIEW_REFLECTED 15   // what the composite weights: mix(env, reflection.rgb, a); through glass mix(lit, refraction.rgb, a)
-#define VIEW_COUNT 16
+#define VIEW_MOTION 16     // motion vectors (G-buffer): hue = direction, brightness = length
+#define VIEW_COUNT 17

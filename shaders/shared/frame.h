@@ -18,9 +18,16 @@ struct FrameUniforms {
   vec4 env_ground;
   vec4 env_constant;
   vec4 settings;       // x ambient scale, y exposure (stops), z reflective F0 threshold, w unused
-  ivec4 counts;        // x lights, y reflectors, z frame index, w unused
+  ivec4 counts;        // x lights, y reflectors, z frame index (FrameTime::index), w unused
   vec4 clip_plane;     // world-space plane (n, d): geometry with dot(n, p) + d < 0 is clipped
+  mat4 prev_view_proj; // the previous frame's view_proj (= view_proj when history is not valid)
+  vec4 time;           // x seconds, y seconds since the previous frame, z 1 when the history
+                       // (previous-frame resources) is valid, w unused
 };
+
+// Motion vectors (TEX_MOTION, RG16F): in pixels, the offset from a pixel's centre to where its
+// surface point was in the previous frame: previous position = pixel centre + motion (GL pixel
+// convention, +y up). Camera and object motion; the background moves with the camera's rotation.
 
 struct DrawUniforms {
   vec4 albedo_metallic;   // linear rgb, metallic
@@ -28,6 +35,9 @@ struct DrawUniforms {
   vec4 emission;          // linear rgb, w unused
   ivec4 ids;              // x reflector id, y has albedo map, z has normal map, w transparent
   ivec4 object;           // x mesh index (the G-buffer's object id), yzw unused
+  mat4 model;             // the mesh's animation transform at this frame (identity when static)
+  mat4 prev_model;        // ... at the previous frame (motion vectors)
+  mat4 normal_model;      // inverse transpose of model (normals and tangents)
 };
 
 struct GpuLight {

@@ -15,6 +15,7 @@ struct HizParams {
   int max_level SSR_DEFAULT(10);        // coarsest level the trace climbs to
   float thickness SSR_DEFAULT(0.15f);   // how far behind the depth buffer still counts (world units)
   float max_distance SSR_DEFAULT(0.0f);   // the ray's length (world units); 0 auto
+  int pad0, pad1, pad2;                 // std140 rounds a block up to 16 bytes (test_layouts.cpp)
 };
 
 SSR_SHARED_END

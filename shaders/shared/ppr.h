@@ -1,14 +1,12 @@
 // Pixel-Projected Reflections (Kim 2018 after Cichocki 2017): parameters and reflector layout,
 // shared by src/techniques/ppr.cpp and shaders/techniques/ppr_*.comp.
 #pragma once
+#include "shared/bindings.h"
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN
 
 #define PPR_MAX_REFLECTORS 16
-#define SSBO_PPR_REFLECTORS 4
-#define IMG_PPR_INTERMEDIATE 3  // r32ui, cleared to PPR_EMPTY, written with imageAtomicMin
-#define TEX_PPR_FALLBACK 19     // RGBA16F: the fallback tracer's reflection (ppr.fallback != none)
 
 struct PprParams {
   int hole_fill SSR_DEFAULT(2);       // 0: none, 1: 4 neighbours, 2: 8 neighbours

@@ -1,17 +1,11 @@
 // Layouts of the ground truth's GPU shading pass (C++ traces with Embree, the GPU shades the hits
 // with the lit pass's own shade_surface, seen from the ray).
 #pragma once
+#include "shared/bindings.h"
 #include "shared/interop.h"
 
 SSR_SHARED_BEGIN
 
-#define REFERENCE_MAX_TEXTURES 8  // albedo and normal maps the shading pass can sample (texture units)
-#define SSBO_REF_SAMPLES 1
-#define SSBO_REF_PIXELS 2
-#define SSBO_REF_MATERIALS 3
-#define TEX_REF_MAP0 10           // units TEX_REF_MAP0 .. TEX_REF_MAP0 + REFERENCE_MAX_TEXTURES - 1
-#define IMG_REF_TRUTH 0
-#define IMG_REF_IDEAL 1
 
 // One ray segment. A sample is `bounces` consecutive segments (segment 0: the reflection ray;
 // segment b: the reflection of segment b-1's hit, present only where that hit is reflective).

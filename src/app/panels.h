@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "scene/scene.h"
-#include "techniques/params.h"
+#include "core/params.h"
 
 namespace ssr {
 

@@ -33,6 +33,7 @@
 #include "eval/runner.h"
 #include "gl/context.h"
 #include "reference/reference.h"
+#include "shared/bindings.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
@@ -221,6 +222,8 @@ class Viewer {
   bool mask_request_ = false;
 
   int fb_w_ = 0, fb_h_ = 0;
+  int frame_index_ = 0;  // the frame being drawn, in the sequence of drawn frames
+  FrameRequest current_frame() const { return FrameRequest(orbit_.cam, FrameTime{frame_index_, 0.0f}); }
   int view_ = VIEW_FINAL;
   int compare_ = CompareOff;
   float split_ = 0.5f, diff_scale_ = 0.25f;
@@ -752,8 +755,7 @@ void Viewer::update_traceable_mask() {
     mask_ref_->load(renderer_->shaders());
     set_reference_progress(*mask_ref_, [this](double f) { draw_progress("traceable mask", f); });
   }
-  renderer_->render_inputs(orbit_.cam, nullptr);
-  renderer_->run_technique(*mask_ref_, nullptr);
+  renderer_->render(current_frame(), *mask_ref_, ViewMode::Final, nullptr);
   const ReferenceOutputs out = reference_outputs(*mask_ref_);
   RgbaImage8 im = class_map(*out.classes, fb_w_, fb_h_);
   // Texture rows go bottom-up.
@@ -770,6 +772,7 @@ void Viewer::update_traceable_mask() {
 
 void Viewer::render() {
   renderer_->resize(fb_w_, fb_h_);
+  ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
   if (!composed_ || composed_.width() != fb_w_ || composed_.height() != fb_h_) {
     composed_ = gl::Texture2D("viewer composed", GL_RGBA8, fb_w_, fb_h_);
     for (Side& s : sides_) {
@@ -792,7 +795,6 @@ void Viewer::render() {
   }
   const std::string fkey = frame_key();
   const int n_sides = compare_ == CompareOff ? 1 : 2;
-  bool inputs_done = false;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     if (s.request == 2) {  // one frame showing "computing..." first
@@ -805,10 +807,8 @@ void Viewer::render() {
     if (!run_it) continue;
     s.request = 0;
     s.timer->begin_frame();
-    if (!inputs_done) renderer_->render_inputs(orbit_.cam, s.timer.get());
-    inputs_done = true;
-    renderer_->run_technique(*s.technique, s.timer.get());
-    renderer_->composite_and_display(static_cast<ViewMode>(view_), s.timer.get());
+    // The inputs render once a frame: the second side's render() finds them current.
+    renderer_->render(current_frame(), *s.technique, static_cast<ViewMode>(view_), s.timer.get());
     s.timer->end_frame();
     glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
     glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0,
@@ -830,14 +830,14 @@ void Viewer::render() {
   // Compose A | B (split), the heat map (difference), or A alone.
   if (compare_ == CompareDiff) {
     glUseProgram(diff_prog_.id());
-    glBindTextureUnit(20, sides_[0].copy.id());
-    glBindTextureUnit(21, sides_[1].copy.id());
-    glBindImageTexture(3, composed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindTextureUnit(TEX_DIFF_A, sides_[0].copy.id());
+    glBindTextureUnit(TEX_DIFF_B, sides_[1].copy.id());
+    glBindImageTexture(IMG_DIFF_OUT, composed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUniform1f(0, diff_scale_);
     diff_prog_.dispatch_2d(fb_w_, fb_h_);
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    glBindTextureUnit(20, 0);
-    glBindTextureUnit(21, 0);
+    glBindTextureUnit(TEX_DIFF_A, 0);
+    glBindTextureUnit(TEX_DIFF_B, 0);
   } else {
     glCopyImageSubData(sides_[0].copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        fb_w_, fb_h_, 1);

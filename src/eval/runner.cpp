@@ -27,7 +27,7 @@ RgbaImageF display_values(const RgbaImageF& hdr, float exposure) {
 // The composited image (ViewMode::Final) or the reflected radiance (ViewMode::Reflected) of
 // what the frame's reflection target holds now, as display values.
 RgbaImageF ScoredFrame::display_of(ViewMode view) {
-  renderer_.composite_and_display(view, nullptr);
+  renderer_.redisplay(view);
   const RgbaImageF hdr = view == ViewMode::Final ? renderer_.read_texture(renderer_.color())
                                                  : renderer_.read_linear();
   return display_values(hdr, renderer_.settings.exposure);
@@ -44,10 +44,9 @@ void put_ideal(Renderer& r, const ReferenceOutputs& out) {
 }
 }  // namespace
 
-ScoredFrame::ScoredFrame(Renderer& renderer, const Camera& camera, Technique& reference)
-    : renderer_(renderer), reference_(reference) {
-  renderer_.render_inputs(camera, nullptr);
-  renderer_.run_technique(reference, nullptr);
+ScoredFrame::ScoredFrame(Renderer& renderer, const FrameRequest& frame, Technique& reference)
+    : renderer_(renderer), reference_(reference), frame_(frame) {
+  renderer_.render(frame_, reference, ViewMode::Final, nullptr);
   truth_ = display_of(ViewMode::Final);
   truth_reflected_ = display_of(ViewMode::Reflected);
   const ReferenceOutputs out = reference_outputs(reference);
@@ -102,7 +101,7 @@ ReferenceImages ScoredFrame::references(int samples) {
     const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
     to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + 7919) % 1000000));
     ref->load(renderer_.shaders());
-    renderer_.run_technique(*ref, nullptr);
+    renderer_.render(frame_, *ref, ViewMode::Final, nullptr);
     put_ideal(renderer_, reference_outputs(*ref));
     it = ideal_at_samples_.emplace(samples, display_of(ViewMode::Final)).first;
   }
@@ -120,7 +119,7 @@ ScoredFrame::Score ScoredFrame::score(Technique& t) {
   // The noise floor's reference run (if a new sample count) overwrites the reflection target:
   // it runs first.
   const ReferenceImages refs = references(technique_samples(t));
-  renderer_.run_technique(t, nullptr);
+  renderer_.render(frame_, t, ViewMode::Final, nullptr);
   Score s;
   s.reflection = renderer_.read_texture(renderer_.reflection());
   s.display = display_of(ViewMode::Final);
@@ -135,13 +134,13 @@ ScoredFrame::Score ScoredFrame::score(Technique& t) {
   s.error.nonfinite = count_nonfinite(s.reflection.pixels) + count_nonfinite(refraction.pixels) +
                       count_nonfinite(renderer_.read_texture(renderer_.color()).pixels);
   s.breakdown = compute_breakdown(labels_, {&s.display, &s.reflected, &s.confidence}, refs,
-                                  t.planar_only());
+                                  t.declare().planar_only);
   return s;
 }
 
 std::vector<HitClass> ScoredFrame::hit_classes_of(const Score& s, const Technique& t) {
   return hit_classes(labels_, {&s.display, &s.reflected, &s.confidence}, references(0),
-                     t.planar_only());
+                     t.declare().planar_only);
 }
 
 namespace {
@@ -154,9 +153,8 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   gl::PassTimer timer(o.clock);
   for (int f = 0; f < o.warmup + o.frames; ++f) {
     timer.begin_frame();
-    renderer.render_inputs(camera, &timer);
-    renderer.run_technique(t, &timer);
-    renderer.composite_and_display(ViewMode::Final, &timer);
+    // A still camera, one frame after another (history carries, as in an application).
+    renderer.render(FrameRequest(camera, FrameTime{f + 1, 0.0f}), t, ViewMode::Final, &timer);
     timer.end_frame();
   }
   timer.flush();

@@ -23,8 +23,8 @@ RgbaImageF display_values(const RgbaImageF& hdr, float exposure);
 // techniques are scored against it on exactly the same G-buffer and lit colour.
 class ScoredFrame {
  public:
-  // Renders the frame's inputs for `camera` and runs `reference` (a "reference" technique).
-  ScoredFrame(Renderer& renderer, const Camera& camera, Technique& reference);
+  // Renders `frame` and runs `reference` (a "reference" technique) on it.
+  ScoredFrame(Renderer& renderer, const FrameRequest& frame, Technique& reference);
 
   struct Score {
     ErrorMetrics error;     // pooled figures (DESIGN §7's `error`)
@@ -58,6 +58,7 @@ class ScoredFrame {
   RgbaImageF display_of(ViewMode view);
   Renderer& renderer_;
   Technique& reference_;
+  FrameRequest frame_;
   RgbaImageF truth_, ideal_, truth_reflected_, ideal_reflected_;
   PixelLabels labels_;
   std::vector<bool> normal_mapped_;

@@ -25,20 +25,26 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
     mirror_.reset();  // rebuilt with the new shaders on the next run
   }
 
-  bool planar_only() const override { return true; }
+  TechniqueDecl declare() const override {
+    return {.reads = kReadGBuffer | kReadReflectors, .planar_only = true};
+  }
 
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
+  void run(const FrameContext& in) override {
+    const gl::Texture2D& reflection = *in.reflection;
     gl::ScopedPass pass(in.timer, "planar");
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(reflection.id(), 0, GL_RGBA, GL_FLOAT, zero);
     if (in.scene.reflectors.empty()) return;
-    if (!mirror_ || mirror_scene_ != in.renderer.scene_id()) {
+    if (!mirror_ || mirror_geometry_ != in.geometry_id) {
+      // The frame's scene as posed now; the mirror renderer must not animate it again.
+      Scene still = in.scene;
+      still.animation = {};
       mirror_.reset();
-      mirror_ = std::make_unique<Renderer>(in.scene, in.width, in.height, shaders_);
-      mirror_scene_ = in.renderer.scene_id();
+      mirror_ = std::make_unique<Renderer>(still, in.width, in.height, shaders_);
+      mirror_geometry_ = in.geometry_id;
     }
     mirror_->resize(in.width, in.height);
-    const Camera& cam = in.renderer.camera();
+    const Camera& cam = in.camera;
     for (std::size_t k = 0; k < in.scene.reflectors.size(); ++k) {
       const Reflector& r = in.scene.reflectors[k];
       glm::vec3 n = r.normal();
@@ -59,12 +65,12 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
       mirror_->settings.clip_plane = glm::vec4(n, -glm::dot(n, r.center) - eps);
       mirror_->render_inputs(m, nullptr);
 
-      in.renderer.bind_frame_inputs();  // back to this frame's G-buffer and uniforms
+      in.rebind();  // back to this frame's G-buffer and uniforms
       const CameraMatrices mm = camera_matrices(m, in.width, in.height);
       const glm::mat4 vp = mm.proj * mm.view;
       glProgramUniformMatrix4fv(resolve_.id(), 0, 1, GL_FALSE, &vp[0][0]);
       glProgramUniform1ui(resolve_.id(), 1, static_cast<GLuint>(k + 1));
-      glBindTextureUnit(12, mirror_->lit().id());
+      glBindTextureUnit(TEX_PLANAR_MIRROR_LIT, mirror_->lit().id());
       glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       resolve_.dispatch_2d(in.width, in.height);
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -75,7 +81,7 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
   gl::ShaderSource shaders_;
   gl::Program resolve_;
   std::unique_ptr<Renderer> mirror_;
-  std::uint64_t mirror_scene_ = 0;  // Renderer::scene_id() of the frame being mirrored
+  std::uint64_t mirror_geometry_ = 0;  // FrameContext::geometry_id of the frame being mirrored
 };
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 #include "core/errors.h"
 #include "reference/embree_scene.h"
-#include "render/renderer.h"
+#include "render/gpu_scene.h"
 #include "shared/bindings.h"
 #include "shared/reference.h"
 #include "shared/reference_params.h"
@@ -47,14 +47,19 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
     program_ = gl::Program::compute(src, "reference/shade.comp");
   }
 
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override;
+  // Its truth goes to the reflection and (glass pixels) refraction targets; the ideal and the
+  // classes are outputs of its own (reference_outputs).
+  TechniqueDecl declare() const override {
+    return {.reads = kReadGBuffer | kReadLit | kReadGlass, .writes_refraction = true};
+  }
+  void run(const FrameContext& in) override;
 
   ReferenceOutputs outputs() const { return {&ideal_, &ideal_refraction_, &classes_, rays_}; }
   std::function<void(double)> progress;
 
  private:
   gl::Program program_;
-  std::uint64_t bvh_scene_ = 0;  // Renderer::scene_id() the BVH was built for
+  std::uint64_t bvh_geometry_ = 0;  // FrameContext::geometry_id the BVH was built for
   std::unique_ptr<EmbreeScene> bvh_;
   gl::Texture2D ideal_, ideal_refraction_;
   std::vector<PixelClass> classes_;
@@ -72,13 +77,14 @@ ReferenceOutputs reference_outputs(const Technique& t) {
   return {};
 }
 
-void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflection) {
+void ReferenceTechnique::run(const FrameContext& in) {
+  const gl::Texture2D& reflection = *in.reflection;
   gl::ScopedPass pass(in.timer, "reference");
   const Scene& scene = in.scene;
-  if (!bvh_ || bvh_scene_ != in.renderer.scene_id()) {
+  if (!bvh_ || bvh_geometry_ != in.geometry_id) {
     bvh_.reset();
     bvh_ = std::make_unique<EmbreeScene>(scene);
-    bvh_scene_ = in.renderer.scene_id();
+    bvh_geometry_ = in.geometry_id;
   }
   const int w = in.width, h = in.height;
   const std::size_t npx = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
@@ -94,7 +100,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   glGetTextureImage(in.gbuffer.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT,
                     static_cast<GLsizei>(npx * 4 * sizeof(std::uint16_t)), material.data());
 
-  const CameraMatrices& m = in.renderer.matrices();
+  const CameraMatrices& m = in.matrices;
   const glm::dmat4 inv_proj = glm::inverse(glm::dmat4(m.proj));
   const glm::dmat4 inv_view = glm::inverse(glm::dmat4(m.view));
   const glm::dmat4 view = glm::dmat4(m.view);
@@ -155,7 +161,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const glm::vec3 f0 = material_f0(scene.materials[static_cast<std::size_t>(scene.meshes[m].material)]);
     reflective_mesh[m] = scene.meshes[m].reflector > 0 ||
-                         std::max({f0.x, f0.y, f0.z}) >= in.renderer.settings.reflective_f0;
+                         std::max({f0.x, f0.y, f0.z}) >= in.settings.reflective_f0;
   }
   // Writes a ray's hit into its segment: position and material, the shading normal with the
   // ray cone's texture footprint (`cone_width`: the cone's width at the hit, world units), uv
@@ -298,8 +304,8 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
         throw RuntimeError("the reference shades at most " + std::to_string(REFERENCE_MAX_TEXTURES) +
                            " albedo and normal maps; this scene has more.");
       s = static_cast<int>(slot_textures.size());
-      slot_textures.push_back(normal ? in.renderer.gpu_scene().normal_texture(image)
-                                     : in.renderer.gpu_scene().albedo_texture(image));
+      slot_textures.push_back(normal ? in.gpu_scene.normal_texture(image)
+                                     : in.gpu_scene.albedo_texture(image));
     }
     return s;
   };
@@ -383,7 +389,8 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
   if (ideal_refraction_.width() != w || ideal_refraction_.height() != h)
     ideal_refraction_ = gl::Texture2D("reference ideal refraction", GL_RGBA16F, w, h);
   glClearTexImage(ideal_refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
-  if (in.renderer.gpu_scene().has_transparent()) {
+  glClearTexImage(in.refraction->id(), 0, GL_RGBA, GL_FLOAT, zero);  // non-glass pixels: none
+  if (in.gpu_scene.has_transparent()) {
     std::vector<float> glass_depth(npx), glass_surface(npx * 4);
     glGetTextureImage(in.gbuffer.glass_depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                       static_cast<GLsizei>(npx * sizeof(float)), glass_depth.data());
@@ -436,7 +443,7 @@ void ReferenceTechnique::run(const TechniqueInputs& in, gl::Texture2D& reflectio
     for (auto& t : pool) t.join();
     rays_ += pixels.size();
     if (!pixels.empty()) {
-      glBindImageTexture(IMG_REF_TRUTH, in.renderer.refraction().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(IMG_REF_TRUTH, in.refraction->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       glBindImageTexture(IMG_REF_IDEAL, ideal_refraction_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       glProgramUniform1i(program_.id(), 2, 1);
       shade("reference refraction");

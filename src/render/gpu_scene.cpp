@@ -48,7 +48,8 @@ GpuScene::GpuScene(const Scene& scene) : vao_("scene vao") {
     u.ids = glm::ivec4(m.reflector, mat.albedo_texture >= 0, mat.normal_texture >= 0,
                        mat.transparent ? 1 : 0);
     u.object = glm::ivec4(static_cast<int>(draws_.size()), 0, 0, 0);
-    d.ubo = gl::make_buffer("draw " + m.name, sizeof u, &u, 0);
+    u.model = u.prev_model = u.normal_model = glm::mat4(1.0f);
+    d.ubo = gl::make_buffer("draw " + m.name, sizeof u, &u, GL_DYNAMIC_STORAGE_BIT);
     d.transparent = mat.transparent;
     has_transparent_ |= mat.transparent;
     draws_.push_back(std::move(d));
@@ -101,6 +102,19 @@ void GpuScene::upload_lights(const std::vector<Light>& scene_lights) {
   light_count_ = static_cast<int>(lights.size());
   lights_ = gl::make_buffer("lights", static_cast<GLsizeiptr>(lights.size() * sizeof(shared::GpuLight)),
                             lights.data(), 0);
+}
+
+void GpuScene::set_transforms(const std::vector<glm::mat4>& model, const std::vector<glm::mat4>& prev_model) {
+  for (std::size_t i = 0; i < draws_.size(); ++i) {
+    Draw& d = draws_[i];
+    const glm::mat4 m = i < model.size() ? model[i] : glm::mat4(1.0f);
+    const glm::mat4 p = i < prev_model.size() ? prev_model[i] : glm::mat4(1.0f);
+    if (m == d.model && p == d.prev_model) continue;  // static meshes upload nothing
+    d.model = m;
+    d.prev_model = p;
+    const glm::mat4 mats[3] = {m, p, glm::transpose(glm::inverse(m))};
+    glNamedBufferSubData(d.ubo.id(), offsetof(shared::DrawUniforms, model), sizeof mats, mats);
+  }
 }
 
 void GpuScene::draw(bool transparent) const {

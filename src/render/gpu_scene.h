@@ -15,6 +15,9 @@ class GpuScene {
   // behind them must stay visible to the tracers.
   void draw(bool transparent) const;
   bool has_transparent() const { return has_transparent_; }
+  // Each mesh's animation transform this frame and the previous one (missing entries: identity):
+  // the G-buffer moves the rest-pose vertices and draws motion vectors from the pair.
+  void set_transforms(const std::vector<glm::mat4>& model, const std::vector<glm::mat4>& prev_model);
   // Replaces the lights (the viewer edits them live); the caller validated them.
   void upload_lights(const std::vector<Light>& lights);
   GLuint lights_ssbo() const { return lights_.id(); }
@@ -31,6 +34,7 @@ class GpuScene {
     GLuint albedo_tex, normal_tex;  // 0 = none
     gl::Buffer ubo;                 // DrawUniforms
     bool transparent;
+    glm::mat4 model{1.0f}, prev_model{1.0f};  // as uploaded
   };
   gl::VertexArray vao_;
   gl::Buffer vbo_, ibo_, lights_;

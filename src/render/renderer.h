@@ -1,8 +1,15 @@
-// The deferred frame (DESIGN §1): G-buffer -> lighting -> technique -> composite -> display.
+// The deferred frame (DESIGN §1). Renderer::render is the frame, as its pass list:
+//   G-buffer (+ motion vectors) -> lighting -> [back faces] [Hi-Z] -> technique -> composite ->
+//   display -> history
+// The bracketed passes run only when the technique declares their resources (technique_api.h).
+// The inputs (G-buffer, lighting) are rendered once per frame: several techniques may run on
+// one frame (compare, the viewer's split), each rendering through the same function.
 //
-// The Renderer owns every target at one size and the programs of the fixed passes; the
-// technique is passed in per frame so that several techniques can run on the same frame inputs.
+// The Renderer owns every frame target at one size, the history (previous-frame targets,
+// swapped each frame) and, per technique instance, its declared internal textures and its
+// previous composited colour.
 #pragma once
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,29 +20,19 @@
 #include "gl/timer.h"
 #include "render/camera.h"
 #include "render/gpu_scene.h"
+#include "render/hiz_pyramid.h"
 #include "render/targets.h"
+#include "render/technique_api.h"
+#include "render/views.h"
 #include "scene/scene.h"
-#include "shared/display.h"
 
 namespace ssr {
 
-class Technique;
-
-enum class ViewMode : int {
-  Final = VIEW_FINAL, Reflection = VIEW_REFLECTION, Confidence = VIEW_CONFIDENCE,
-  Lit = VIEW_LIT, Normal = VIEW_NORMAL, Depth = VIEW_DEPTH, Albedo = VIEW_ALBEDO,
-  Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
-  Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE, Offsets = VIEW_OFFSETS,
-  Holes = VIEW_HOLES, Reflected = VIEW_REFLECTED,
-};
-// Names as the CLI takes them ("final", "reflection", ...), in enum order.
-const std::vector<std::string>& view_mode_names();
-ViewMode parse_view_mode(const std::string& name);  // throws InputError
-
-struct FrameSettings {
-  float exposure = 0.0f;             // stops, applied before tone mapping
-  float reflective_f0 = 0.1f;        // pixels whose max F0 reaches this do reflection work
-  glm::vec4 clip_plane{0, 0, 0, 1};  // world plane; the G-buffer keeps dot(plane, (p,1)) >= 0
+// One frame to render: a camera at a time. Consecutive indices (with no cut) carry history.
+struct FrameRequest {
+  FrameRequest(const Camera& c, FrameTime t = {}) : camera(c), time(t) {}  // NOLINT: implicit
+  Camera camera;
+  FrameTime time;
 };
 
 class Renderer {
@@ -49,40 +46,53 @@ class Renderer {
   int width() const { return width_; }
   int height() const { return height_; }
   const Scene& scene() const { return scene_; }
-  // Unique for every Renderer (and so every scene upload) in the process: techniques that cache
-  // per-scene data key it on this, never on an address that a later scene may reuse.
+  // Unique for every Renderer (and so every scene upload) in the process: caches key on this,
+  // never on an address that a later scene may reuse.
   std::uint64_t scene_id() const { return scene_id_; }
   // The diagonal of the scene's bounding box (world units): "auto" ray lengths.
   float scene_diagonal() const { return scene_diagonal_; }
   const gl::ShaderSource& shaders() const { return shaders_; }
   // Replaces the lights, environment and ambient (live editing); the geometry stays. Throws
-  // InputError, changing nothing, when the result would not pass validate().
+  // InputError, changing nothing, when the result would not pass validate(). Resets history.
   void set_lighting(const std::vector<Light>& lights, const Environment& environment, float ambient);
   // Rebuilds the fixed passes' programs (live reload); keeps the old ones on failure and throws.
   void reload_shaders();
 
   FrameSettings settings;
 
-  // Runs G-buffer + lighting for `camera`, then the technique, composite and display.
-  void render(const Camera& camera, Technique& technique, ViewMode view, gl::PassTimer* timer);
-  // The passes before the technique, and the ones after, for callers that run several
-  // techniques on the same frame inputs.
-  void render_inputs(const Camera& camera, gl::PassTimer* timer);
-  void run_technique(Technique& technique, gl::PassTimer* timer);
-  void composite_and_display(ViewMode view, gl::PassTimer* timer);
+  // The frame: renders `request`'s inputs unless they are this frame's already, then runs the
+  // technique, composites and displays `view`.
+  void render(const FrameRequest& request, Technique& technique, ViewMode view, gl::PassTimer* timer);
+  // The input passes only (G-buffer, motion, lighting): for a frame that no technique runs on
+  // (the planar oracle's mirrored views). A no-op when `request` is the current frame.
+  void render_inputs(const FrameRequest& request, gl::PassTimer* timer);
+  // Composites the current reflection and refraction targets again (with the last technique's
+  // blend) and displays `view`: to show another view of the same frame, or an image copied in.
+  void redisplay(ViewMode view, gl::PassTimer* timer = nullptr);
 
   const GBuffer& gbuffer() const { return gbuffer_; }
   const gl::Texture2D& lit() const { return lit_; }
+  const gl::Texture2D& motion() const { return motion_; }
   const gl::Texture2D& reflection() const { return reflection_; }
-  const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: steps, hit share, distance
+  const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: the debug views' channels
   const gl::Texture2D& refraction() const { return refraction_; }  // RGBA16F: radiance, confidence
   const gl::Texture2D& color() const { return color_; }
   const gl::Texture2D& display() const { return display_; }  // RGBA8 (sRGB values)
+  // The previous frame's targets (null until some technique declared them).
+  const gl::Texture2D* prev_lit() const { return history_ ? &history_->lit : nullptr; }
+  const gl::Texture2D* prev_depth() const { return history_ ? &history_->depth : nullptr; }
+  const gl::Texture2D* prev_normal_roughness() const { return history_ ? &history_->normal_roughness : nullptr; }
+  // Whether this frame's history resources hold the previous frame (false on the first frame, a
+  // cut, a resize, a skipped index, a scene change).
+  bool history_valid() const { return history_valid_; }
   const CameraMatrices& matrices() const { return matrices_; }
   const Camera& camera() const { return camera_; }
+  const FrameTime& frame_time() const { return time_; }
   const GpuScene& gpu_scene() const { return *gpu_scene_; }
+  // The scene posed at the current frame's time (the scene itself when nothing moves).
+  const Scene& posed_scene() const { return posed_ ? *posed_ : scene_; }
   GLuint frame_ubo() const { return frame_ubo_.id(); }
-  // Binds the frame UBO, lights and every target at their named slots (DESIGN: shared/bindings.h).
+  // Binds the frame UBO, lights and every target at their named slots (shared/bindings.h).
   void bind_frame_inputs() const;
 
   RgbaImage8 read_display() const;
@@ -94,19 +104,60 @@ class Renderer {
   std::vector<std::uint16_t> read_material() const;
 
  private:
+  struct History {
+    gl::Texture2D lit, depth, normal_roughness;
+  };
+  // Per technique instance: its declared textures and its previous composited colour.
+  struct TechniqueState {
+    std::uint64_t serial = 0;          // the frame it last ran on
+    std::string params;                // its parameters then (a change resets it)
+    int width = 0, height = 0;
+    std::uint64_t generation = 0;
+    std::vector<TextureDecl> decls;
+    std::vector<gl::Texture2D> textures;
+    gl::Texture2D prev_color;
+  };
+
+  bool is_current(const FrameRequest& request) const;
+  void begin_frame(const FrameRequest& request);
+  void gbuffer_pass(gl::PassTimer* timer);
+  void lighting_pass(gl::PassTimer* timer);
+  void backface_pass(gl::PassTimer* timer);
+  void hiz_pass(gl::PassTimer* timer);
+  void ensure_history();
+  TechniqueState& technique_state(Technique& t, const TechniqueDecl& decl);
+  void technique_pass(Technique& t, const TechniqueDecl& decl, TechniqueState& state, gl::PassTimer* timer);
+  void composite_pass(int blend, gl::PassTimer* timer);
+  void display_pass(ViewMode view, gl::PassTimer* timer);
+  void keep_color(TechniqueState& state);
+  void attach_gbuffer();
+  void upload_uniforms();
+
   Scene scene_;
   gl::ShaderSource shaders_;
   std::unique_ptr<GpuScene> gpu_scene_;
+  std::unique_ptr<Scene> posed_;  // the scene at time_ (only for scenes with moving objects)
   int width_ = 0, height_ = 0;
   GBuffer gbuffer_;
-  gl::Texture2D lit_, reflection_, color_, display_, linear_, debug_, refraction_;
-  void render_backfaces();
+  gl::Texture2D lit_, motion_, reflection_, color_, display_, linear_, debug_, refraction_;
+  std::optional<History> history_;
   gl::Buffer frame_ubo_;
   gl::Program gbuffer_prog_, glass_prog_, lighting_prog_, composite_prog_, display_prog_;
+  HizPyramid hiz_;
   CameraMatrices matrices_{};
+  glm::mat4 prev_view_proj_{1.0f};
+  std::vector<glm::mat4> models_, prev_models_;  // per mesh, this frame and the previous one
   int blend_ = 0;  // the last technique's composite blend
   Camera camera_{};
-  int frame_index_ = 0;
+  FrameTime time_{}, prev_time_{};
+  FrameSettings frame_settings_{};  // the settings the current inputs were rendered with
+  bool inputs_valid_ = false;       // the targets hold the frame described by camera_/time_
+  bool history_valid_ = false;
+  bool backfaces_built_ = false, hiz_built_ = false;  // this frame's on-demand resources
+  std::uint64_t serial_ = 0;        // frames begun
+  std::uint64_t generation_ = 1;    // bumped by anything that invalidates history
+  std::uint64_t geometry_id_ = 0;
+  std::map<std::uint64_t, TechniqueState> states_;
   std::uint64_t scene_id_ = 0;
   float scene_diagonal_ = 0;
 };

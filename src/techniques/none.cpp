@@ -13,9 +13,10 @@ class NoneTechnique final : public TechniqueWithParams<NoParams> {
   void load(const gl::ShaderSource& src) override {
     program_ = gl::Program::compute(src, "techniques/none.comp");
   }
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
+  TechniqueDecl declare() const override { return {.reads = kReadGBuffer}; }
+  void run(const FrameContext& in) override {
     gl::ScopedPass pass(in.timer, "none");
-    glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     program_.dispatch_2d(in.width, in.height);  // out-of-range invocations: imageStore ignores them
   }
 

@@ -4,7 +4,6 @@
 // back to itself into an r32ui intermediate image at the destination pixel. Resolve pass:
 // decode, patch holes from neighbours, fetch the reflected colour; normal maps and roughness
 // by the thesis's reprojection of the perturbed (or GGX-sampled) reflection vector.
-#include "render/renderer.h"
 #include "scene/scene.h"
 #include "shared/ppr.h"
 #include "shared/ppr_packing.h"
@@ -34,7 +33,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
 
   void load(const gl::ShaderSource& src) override {
     src_ = src;
-    fallback_.reset();  // rebuilt from the new shaders on the next run
+    fallback_loaded_ = false;  // rebuilt from the new shaders on the next run
     auto clear = gl::Program::compute(src, "techniques/ppr_clear.comp");
     auto project = gl::Program::compute(src, "techniques/ppr_project.comp");
     auto resolve = gl::Program::compute(src, "techniques/ppr_resolve.comp");
@@ -43,15 +42,27 @@ class PprTechnique final : public TechniqueWithParams<P> {
     resolve_ = std::move(resolve);
   }
 
-  bool writes_debug() const override { return true; }
-  // With a fallback tracer, its refraction of glass pixels stands.
-  bool writes_refraction() const override { return params_.fallback != 0; }
-  bool planar_only() const override { return params_.fallback == 0; }
+  // With a fallback tracer, ppr also reads what it reads and its refraction of glass pixels
+  // stands.
+  TechniqueDecl declare() const override {
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadLit | kReadReflectors;
+    d.debug_views = {ViewMode::Offsets, ViewMode::Holes};
+    d.textures = {{"intermediate", GL_R32UI}};
+    if (params_.fallback != 0) {
+      const TechniqueDecl f = fallback_technique().declare();
+      d.reads |= f.reads;
+      d.writes_refraction = true;
+      d.textures.push_back({"fallback", GL_RGBA16F});
+    }
+    d.planar_only = params_.fallback == 0;
+    return d;
+  }
 
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
+  void run(const FrameContext& in) override {
     const Scene& scene = in.scene;
     // The reflectors, oriented towards this frame's camera; edge-on ones are left out.
-    const glm::vec3 eye = in.renderer.camera().position;
+    const glm::vec3 eye = in.camera.position;
     std::vector<shared::PprReflector> refl;
     for (const Reflector& r : scene.reflectors) {
       glm::vec3 n = r.normal();
@@ -68,28 +79,27 @@ class PprTechnique final : public TechniqueWithParams<P> {
     params_.reflector_count = static_cast<int>(refl.size());
     if (refl.empty()) refl.push_back({});  // a buffer must have storage
     reflectors_ = gl::make_buffer("ppr reflectors", static_cast<GLsizeiptr>(refl.size() * sizeof(refl[0])), refl.data(), 0);
-    if (intermediate_.width() != in.width || intermediate_.height() != in.height)
-      intermediate_ = gl::Texture2D("ppr intermediate", GL_R32UI, in.width, in.height);
+    gl::Texture2D& intermediate = *in.textures[0];
     const GLuint bits = shared::ppr_fraction_bits(static_cast<GLuint>(in.width), static_cast<GLuint>(in.height));
 
     // The hybrid: the fallback tracer first (over the whole frame, for now), into its own image.
     if (params_.fallback != 0) {
-      const ParamSet table = params();
-      const std::string name = table.to_string(static_cast<std::size_t>(table.find("fallback")));
-      if (!fallback_ || fallback_->name() != name) {
-        fallback_ = create_technique(name);
-        fallback_->load(src_);
+      Technique& fallback = fallback_technique();
+      if (!fallback_loaded_) {
+        fallback.load(src_);
+        fallback_loaded_ = true;
       }
-      if (fallback_tex_.width() != in.width || fallback_tex_.height() != in.height)
-        fallback_tex_ = gl::Texture2D("ppr fallback", GL_RGBA16F, in.width, in.height);
-      fallback_->run(in, fallback_tex_);
+      FrameContext f = in;
+      f.reflection = in.textures[1];
+      f.textures.clear();
+      fallback.run(f);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glBindTextureUnit(TEX_PPR_FALLBACK, fallback_tex_.id());
+      glBindTextureUnit(TEX_PPR_FALLBACK, in.textures[1]->id());
     }
 
     bind_params();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
-    glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     {
       gl::ScopedPass pass(in.timer, "ppr clear");
       clear_.dispatch_2d(in.width, in.height);
@@ -105,16 +115,27 @@ class PprTechnique final : public TechniqueWithParams<P> {
       gl::ScopedPass pass(in.timer, "ppr resolve");
       glProgramUniform1ui(resolve_.id(), 0, bits);
       glProgramUniform1i(resolve_.id(), 1, params_.fallback != 0 ? 1 : 0);
-      glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       resolve_.dispatch_2d(in.width, in.height);
     }
   }
 
  private:
   gl::Program clear_, project_, resolve_;
+  // The fallback tracer at its defaults, created when the parameter names it (no GL needed).
+  Technique& fallback_technique() const {
+    ParamSet table = const_cast<PprTechnique*>(this)->params();
+    const std::string name = table.to_string(static_cast<std::size_t>(table.find("fallback")));
+    if (!fallback_ || fallback_->name() != name) {
+      fallback_ = create_technique(name);
+      fallback_loaded_ = false;
+    }
+    return *fallback_;
+  }
+
   gl::ShaderSource src_;
-  std::unique_ptr<Technique> fallback_;
-  gl::Texture2D intermediate_, fallback_tex_;
+  mutable std::unique_ptr<Technique> fallback_;
+  mutable bool fallback_loaded_ = false;
   gl::Buffer reflectors_;
 };
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "shared/ray_options.h"
-#include "techniques/params.h"
+#include "core/params.h"
 
 namespace ssr {
 

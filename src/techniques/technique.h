@@ -1,64 +1,18 @@
-// The technique interface and registry.
+// The technique registry and the common shape of a technique (a Params table + run).
 //
-// A technique reads the frame's inputs (G-buffer, lit colour, frame uniforms) and writes one
-// RGBA16F reflection texture: rgb = reflected radiance, a = confidence in [0,1]. It never
-// allocates its inputs; it says what it needs and the renderer provides it.
-//
-// Adding a technique: one src/techniques/<name>.cpp (Params table + run), its shaders under
-// shaders/techniques/, and one line in registry.cpp.
+// The interface itself (what a technique declares, reads and writes) is render/technique_api.h.
+// Adding a technique: one src/techniques/<name>.cpp (Params table + declare + run), its shaders
+// under shaders/techniques/, and one line in registry.cpp.
 #pragma once
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "gl/program.h"
-#include "gl/timer.h"
-#include "render/targets.h"
+#include "render/technique_api.h"
 #include "shared/bindings.h"
-#include "techniques/params.h"
 
 namespace ssr {
-
-struct Scene;
-class Renderer;
-
-// Everything a technique may read for one frame.
-struct TechniqueInputs {
-  const Renderer& renderer;   // camera, matrices, scene upload; bind_frame_inputs() to restore
-  const GBuffer& gbuffer;
-  const gl::Texture2D& lit;   // RGBA16F lit colour without reflections (bilinear filtering on)
-  GLuint frame_ubo;           // FrameUniforms, bound at UBO_FRAME
-  int width, height;
-  const Scene& scene;
-  gl::PassTimer* timer;       // may be null
-  float scene_diagonal;       // world units: the scene's bounding-box diagonal ("auto" lengths)
-};
-
-class Technique {
- public:
-  virtual ~Technique() = default;
-  virtual const std::string& name() const = 0;
-  // The technique's parameters; valid for the technique's lifetime. Needs no GL context.
-  virtual ParamSet params() = 0;
-  // (Re)builds GL programs from `src`. Throws RuntimeError with file:line on a compile error,
-  // leaving the previous programs in place.
-  virtual void load(const gl::ShaderSource& src) = 0;
-  // Writes `reflection` (same size as the frame). Called with the frame's inputs bound, and
-  // the debug image (steps, hit share, distance) bound at IMG_OUT2.
-  virtual void run(const TechniqueInputs& in, gl::Texture2D& reflection) = 0;
-
-  // What the renderer must provide or do around run().
-  virtual bool needs_backfaces() const { return false; }  // back-face depth at TEX_BACK_DEPTH
-  // The outputs besides the reflection that the technique writes; the frame clears the others
-  // before run(), so that no technique reads or shows another's stale image.
-  virtual bool writes_debug() const { return false; }       // steps, hit share, distance (IMG_OUT2)
-  virtual bool writes_refraction() const { return false; }  // glass pixels' refraction (IMG_REFRACTION)
-  virtual int composite_blend() const { return 0; }       // 0 standard, 1 Roberts (mix(lit, refl, a))
-  // Handles planar reflector pixels only (ppr without a fallback, the planar oracle): the
-  // breakdown reports every other pixel as not handled instead of scoring what it leaves there.
-  virtual bool planar_only() const { return false; }
-};
 
 struct TechniqueInfo {
   std::string name;

@@ -36,24 +36,29 @@ class TracerTechnique : public TechniqueWithParams<P> {
     return p;
   }
 
-  void run(const TechniqueInputs& in, gl::Texture2D& reflection) override {
+  void run(const FrameContext& in) override {
     gl::ScopedPass pass(in.timer, this->name());
-    prepare(in);
     const P p = resolved({in.scene_diagonal,
                           static_cast<float>(std::hypot(double(in.width), double(in.height)))});
     this->bind_params(&p);
-    glBindImageTexture(IMG_OUT, reflection.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     program_.dispatch_2d(in.width, in.height);
   }
 
-  bool needs_backfaces() const override { return this->params_.ray.backface_thickness != 0; }
-  bool writes_debug() const override { return true; }
-  bool writes_refraction() const override { return true; }
-  int composite_blend() const override { return this->params_.ray.blend; }
+  // Every tracer reads the G-buffer, the lit colour and the glass surfaces (it refracts), and
+  // fills the steps/hits/distance debug views; `extra_reads` adds its own (the Hi-Z pyramid).
+  TechniqueDecl declare() const override {
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadLit | kReadGlass | extra_reads_;
+    if (this->params_.ray.backface_thickness != 0) d.reads |= kReadBackDepth;
+    d.writes_refraction = true;
+    d.debug_views = {ViewMode::Steps, ViewMode::Hits, ViewMode::Distance};
+    d.blend = this->params_.ray.blend;
+    return d;
+  }
 
  protected:
-  // Work before the trace (e.g. building a depth pyramid); timed with the technique.
-  virtual void prepare(const TechniqueInputs&) {}
+  std::uint32_t extra_reads_ = 0;
 
  private:
   std::string shader_;

@@ -168,7 +168,7 @@ TEST(Frame, AllScenesTechniquesViewsFinite) {
         }
       }
       for (std::size_t v = 0; v < view_mode_names().size(); ++v) {
-        r.composite_and_display(static_cast<ViewMode>(v), nullptr);
+        r.redisplay(static_cast<ViewMode>(v));
         EXPECT_EQ(test::count_nonfinite(r.read_linear()), 0u) << info.name << " view " << v;
       }
     }

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "gl_test_env.h"
-#include "techniques/hiz_pyramid.h"
+#include "render/hiz_pyramid.h"
 #include "tracer_test_util.h"
 
 using namespace ssr;

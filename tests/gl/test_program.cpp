@@ -65,7 +65,7 @@ TEST(Program, EveryEmbeddedProgramCompiles) {
   gl::ShaderSource embedded;
   for (const char* p : {"render/lighting.comp", "render/composite.comp", "render/display.comp",
                         "techniques/linear.comp", "techniques/none.comp", "eval/floor.comp",
-                        "techniques/hiz.comp", "techniques/hiz_pyramid.comp",
+                        "techniques/hiz.comp", "render/hiz_pyramid.comp",
                         "reference/shade.comp", "reference/planar_resolve.comp", "techniques/ppr_clear.comp",
                         "techniques/ppr_project.comp", "techniques/ppr_resolve.comp"})
     EXPECT_NO_THROW(gl::Program::compute(embedded, p)) << p;

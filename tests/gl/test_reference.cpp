@@ -60,8 +60,7 @@ TEST(Reference, DeterministicForAFixedSeed) {
     p.set(static_cast<std::size_t>(p.find("samples")), 32);
     p.set(static_cast<std::size_t>(p.find("seed")), seed);
     ref->load(r.shaders());
-    r.render_inputs(scene.cameras[0], nullptr);
-    r.run_technique(*ref, nullptr);
+    r.render(scene.cameras[0], *ref, ViewMode::Final, nullptr);
     return r.read_texture(r.reflection()).pixels;
   };
   const auto a = run(7), b = run(7), c = run(8);
@@ -110,8 +109,7 @@ TEST(Reference, RobustToDepthBufferError) {
   Renderer r(scene, 96, 54);
   auto ref = create_technique("reference");
   ref->load(r.shaders());
-  r.render_inputs(scene.cameras.front(), nullptr);
-  r.run_technique(*ref, nullptr);
+  r.render(scene.cameras.front(), *ref, ViewMode::Final, nullptr);
   const RgbaImageF exact = r.read_texture(r.reflection());
 
   std::vector<float> depth = r.read_depth();  // row 0 = top; uploads go bottom-up
@@ -123,7 +121,7 @@ TEST(Reference, RobustToDepthBufferError) {
       pushed[static_cast<std::size_t>(y) * w + x] = d > 0.0f ? std::max(d - 5e-6f, d * 0.5f) : d;
     }
   glTextureSubImage2D(r.gbuffer().depth.id(), 0, 0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, pushed.data());
-  r.run_technique(*ref, nullptr);
+  r.render(scene.cameras.front(), *ref, ViewMode::Final, nullptr);  // same frame: the pushed depth stays
   const RgbaImageF moved = r.read_texture(r.reflection());
 
   double sum = 0;

@@ -82,7 +82,7 @@ TEST(Refraction, UnwrittenOutputsAreCleared) {
     for (std::size_t p = 0; p < static_cast<std::size_t>(w) * h; ++p) {
       const bool reflective = (material[p * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;
       const bool is_glass = glass.pixels[p * 4 + 3] >= 1.0f;
-      if (reflective || (is_glass && t->writes_refraction())) continue;
+      if (reflective || (is_glass && t->declare().writes_refraction)) continue;
       ++compared;
       for (std::size_t c = 0; c < 3; ++c) differ += img.pixels[p * 4 + c] != base.pixels[p * 4 + c];
     }

@@ -9,6 +9,7 @@
 
 #include "eval/runner.h"
 #include "gl_test_env.h"
+#include "scene_builders.h"
 #include "render/renderer.h"
 #include "scene/meshgen.h"
 #include "scene/scene_io.h"
@@ -19,40 +20,10 @@ using namespace ssr;
 
 namespace {
 
-Material material(glm::vec3 albedo, float roughness, float metallic, float reflectance) {
-  Material m;
-  m.name = "m";
-  m.albedo = albedo;
-  m.roughness = roughness;
-  m.metallic = metallic;
-  m.reflectance = reflectance;
-  return m;
-}
-
-void add_mesh(Scene& s, Mesh m, const std::string& name, int mat, const glm::mat4& xf, int reflector = 0) {
-  meshgen::transform(m, xf);
-  m.name = name;
-  m.material = mat;
-  m.reflector = reflector;
-  s.meshes.push_back(std::move(m));
-}
-
-Light point_light(glm::vec3 position, float intensity) {
-  Light l;
-  l.position = position;
-  l.intensity = intensity;
-  l.range = 30.0f;
-  return l;
-}
-
-Camera camera(const char* name, glm::vec3 position, glm::vec3 target, float fov_y_deg) {
-  Camera c;
-  c.name = name;
-  c.position = position;
-  c.target = target;
-  c.fov_y_deg = fov_y_deg;
-  return c;
-}
+using test::add_mesh;
+using test::camera;
+using test::material;
+using test::point_light;
 
 // A mirror floor (reflector 1) with a red box, a green sphere and a thin yellow pole standing
 // on it, seen from low: their bases meet their reflections in contact lines across the frame.
@@ -223,8 +194,7 @@ TEST(Verdicts, MultiBounceTruthBetweenFacingMirrors) {
     ParamSet p = ref->params();
     p.set(static_cast<std::size_t>(p.find("bounces")), bounces);
     ref->load(r.shaders());
-    r.render_inputs(s.cameras[0], nullptr);
-    r.run_technique(*ref, nullptr);
+    r.render(s.cameras[0], *ref, ViewMode::Final, nullptr);
     return r.read_texture(r.reflection());
   };
   std::vector<std::size_t> lit_counts;

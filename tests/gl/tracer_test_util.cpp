@@ -40,7 +40,6 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
   auto t = create_technique(technique);
   apply_assignments(*t, assignments);
   t->load(slot->renderer->shaders());
-  slot->renderer->render_inputs(slot->camera, nullptr);  // another test may have drawn since
   TracerScore s;
   ScoredFrame::Score score = slot->frame->score(*t);
   s.error = score.error;

@@ -2,7 +2,7 @@
 // for an odd source's last texel, 3 texels) cover every source texel.
 #include <gtest/gtest.h>
 
-#include "techniques/hiz_pyramid.h"
+#include "render/hiz_pyramid.h"
 
 using ssr::hiz_level_sizes;
 

@@ -1,4 +1,4 @@
-// One level of the `hiz` depth pyramid (src/techniques/hiz.cpp): level 0 copies the depth
+// One level of the depth pyramid (src/render/hiz_pyramid.cpp): level 0 copies the depth
 // buffer, level k+1 keeps the max (reversed-Z: the closest depth) of its level-k footprint.
 #include "shared/bindings.h"
 #include "shared/hiz.h"

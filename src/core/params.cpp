@@ -1,4 +1,4 @@
-#include "techniques/params.h"
+#include "core/params.h"
 
 #include <charconv>
 #include <cmath>

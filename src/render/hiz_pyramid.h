@@ -1,4 +1,5 @@
-// The depth pyramid of `hiz`: level sizes (shared by the GL code and the tests) and the GL pass
+// The depth pyramid (a frame resource built for techniques that declare kReadHiz, e.g. `hiz`):
+// level sizes (shared by the GL code and the tests) and the GL pass
 // that builds it.
 #pragma once
 #include <utility>
@@ -17,7 +18,7 @@ std::vector<std::pair<int, int>> hiz_level_sizes(int w, int h);
 // (reversed-Z: closest) over each texel's level-k footprint. One dispatch per level.
 class HizPyramid {
  public:
-  // Builds the program (shaders/techniques/hiz_pyramid.comp); throws on a compile error.
+  // Builds the program (shaders/render/hiz_pyramid.comp); throws on a compile error.
   void load(const gl::ShaderSource& src);
   // Rebuilds every level from a D32F/R32F depth texture (reallocating on a size change) and
   // leaves the pyramid bound at TEX_HIZ. Binds IMG_OUT.

@@ -1,0 +1,33 @@
+// What the display pass can show (--view, the viewer's view list): one table.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "shared/display.h"
+
+namespace ssr {
+
+enum class ViewMode : int {
+  Final = VIEW_FINAL, Reflection = VIEW_REFLECTION, Confidence = VIEW_CONFIDENCE,
+  Lit = VIEW_LIT, Normal = VIEW_NORMAL, Depth = VIEW_DEPTH, Albedo = VIEW_ALBEDO,
+  Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
+  Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE, Offsets = VIEW_OFFSETS,
+  Holes = VIEW_HOLES, Reflected = VIEW_REFLECTED, Motion = VIEW_MOTION,
+};
+
+struct ViewInfo {
+  ViewMode mode;
+  const char* name;         // as the CLI takes it
+  const char* description;  // one line
+  // A view of the technique debug image: offered only for techniques that declare it
+  // (TechniqueDecl::debug_views); every other view exists for every technique.
+  bool debug;
+};
+// Every view, in ViewMode order.
+const std::vector<ViewInfo>& view_table();
+// Names as the CLI takes them ("final", "reflection", ...), in ViewMode order.
+const std::vector<std::string>& view_mode_names();
+ViewMode parse_view_mode(const std::string& name);  // throws InputError
+const ViewInfo& view_info(ViewMode mode);
+
+}  // namespace ssr
