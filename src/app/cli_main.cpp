@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   CLI::App app{"ssrlab: screen-space reflection laboratory (headless)"};
   app.require_subcommand(1);
   std::vector<Command> commands = {add_render_command(app), add_compare_command(app),
-                                   add_bench_command(app)};
+                                   add_bench_command(app), add_sequence_command(app)};
   CLI::App* scenes = app.add_subcommand("scenes", "List the built-in scenes and scene files.");
   CLI::App* techniques = app.add_subcommand("techniques", "List every technique with every parameter, and the presets.");
 

@@ -25,5 +25,6 @@ struct Command {
 Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_sequence_command(CLI::App& app);
 
 }  // namespace ssr

@@ -33,20 +33,6 @@ std::string fixed_text(double v, int decimals) {
   return buf;
 }
 
-nlohmann::json error_json(const ErrorMetrics& e) {
-  return nlohmann::json{
-      {"rmse", e.rmse},
-      {"psnr", e.psnr},
-      {"rmse_traceable", e.rmse_traceable},
-      {"psnr_traceable", e.psnr_traceable},
-      {"rmse_missing", e.rmse_missing},
-      {"coverage", e.coverage},
-      {"reflective", e.reflective},
-      {"traceable", e.traceable},
-      {"missing", e.missing},
-      {"sky", e.sky},
-  };
-}
 
 nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
@@ -145,6 +131,21 @@ std::string pad_right(const std::string& s, std::size_t w) {
 }
 
 }  // namespace
+
+nlohmann::json error_json(const ErrorMetrics& e) {
+  return nlohmann::json{
+      {"rmse", e.rmse},
+      {"psnr", e.psnr},
+      {"rmse_traceable", e.rmse_traceable},
+      {"psnr_traceable", e.psnr_traceable},
+      {"rmse_missing", e.rmse_missing},
+      {"coverage", e.coverage},
+      {"reflective", e.reflective},
+      {"traceable", e.traceable},
+      {"missing", e.missing},
+      {"sky", e.sky},
+  };
+}
 
 nlohmann::json breakdown_json(const Breakdown& b) {
   nlohmann::json regions = nlohmann::json::object();

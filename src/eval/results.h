@@ -79,6 +79,8 @@ std::string results_table(const RunResults& run, const std::string& clock);
 // `regions` (names as Region::name() gives them) keeps only those rows, empty keeps all.
 std::string breakdown_table(const RunResults& run, const std::vector<std::string>& regions = {});
 
+// The "error" object of one result (pooled figures).
+nlohmann::json error_json(const ErrorMetrics& e);
 // The "regions" object of one result (README: results JSON).
 nlohmann::json breakdown_json(const Breakdown& b);
 

@@ -1,0 +1,180 @@
+// `ssrlab sequence`: a camera path frame by frame, every technique keeping its history, scored
+// against each frame's truth, with temporal metrics; JSON, optional PNG frames, video and plots.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "core/revision.h"
+#include "core/variants.h"
+#include "eval/grid.h"
+#include "eval/results.h"
+#include "eval/sequence.h"
+#include "eval/video.h"
+#include "render/image_io.h"
+#include "scene/scene_io.h"
+
+namespace fs = std::filesystem;
+
+namespace ssr {
+namespace {
+
+struct SequenceOptions {
+  std::string scene = "gallery";
+  std::string path;  // default: the scene's path option, its first path, else "still"
+  int frames = 0;
+  std::string techniques;
+  std::vector<std::string> presets;
+  std::vector<std::string> sets;
+  std::string size = "320x180";
+  int truth_every = 1;
+  float fps = 30.0f;
+  float exposure = 0.0f;
+  std::string json, out, video, plot;
+  std::string gl = "auto";
+};
+
+// Rows of equal width, stacked with a dark gap.
+RgbaImage8 vstack(const std::vector<RgbaImage8>& rows, int gap = 4) {
+  RgbaImage8 out{rows.front().width, 0, {}};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (i > 0) out.pixels.insert(out.pixels.end(), static_cast<std::size_t>(out.width) * gap * 4, 48);
+    out.pixels.insert(out.pixels.end(), rows[i].pixels.begin(), rows[i].pixels.end());
+    out.height += rows[i].height + (i > 0 ? gap : 0);
+  }
+  for (std::size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 255;
+  return out;
+}
+
+// One row a technique: its final image | the truth | |difference| heat map.
+RgbaImage8 compose(const SequenceImages& im, const std::vector<std::string>& labels, int w, int h) {
+  const RgbaImage8 black{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, 0)};
+  std::vector<RgbaImage8> rows;
+  char when[64];
+  std::snprintf(when, sizeof when, "  frame %d  t=%.2fs%s", im.frame.index, im.frame.time, im.frame.cut ? "  CUT" : "");
+  for (std::size_t v = 0; v < im.technique.size(); ++v) {
+    const bool truth = im.truth != nullptr;
+    rows.push_back(labelled_panels(
+        {{labels[v] + when, im.technique[v]->pixels.empty() ? black : to_rgba8(*im.technique[v])},
+         {truth ? "truth" : "truth: not this frame", truth ? to_rgba8(*im.truth) : black},
+         {truth ? "|difference| (0.25 = hottest)" : "", truth ? heat_map(*im.technique[v], *im.truth, *im.classes) : black}}));
+  }
+  return vstack(rows);
+}
+
+int run_sequence_command(const SequenceOptions& o) {
+  const auto [w, h] = parse_size(o.size);
+  if (o.frames < 1 || o.frames > 100000) throw InputError("--frames must be in [1, 100000].");
+  if (o.truth_every < 1 || o.truth_every > 100000) throw InputError("--truth-every must be in [1, 100000].");
+  if (!(o.fps > 0.0f) || o.fps > 1000.0f) throw InputError("--fps must be in (0, 1000].");
+  if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot is written as an .svg.");
+  require_output_files({{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}});
+  if (!o.out.empty()) {
+    const fs::path dir(o.out), parent = fs::absolute(dir).parent_path();
+    if (!fs::is_directory(parent)) throw InputError("--out: the directory '" + parent.string() + "' does not exist.");
+    if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
+      throw InputError("--out '" + o.out + "' must be a new or empty directory.");
+  }
+  Scene scene = load_scene(o.scene);
+  SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps};
+  sequence_path(scene, o.path);  // an unknown path is an error before any work
+  std::vector<std::string> names;
+  if (o.techniques.empty()) {
+    for (const TechniqueInfo& t : technique_registry())
+      if (t.name != "reference") names.push_back(t.name);
+  } else {
+    names = split_list(o.techniques, "technique");
+  }
+  const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
+  std::vector<std::string> labels;
+  for (const Variant& v : variants) labels.push_back(v.label());
+  auto reference = create_technique("reference");
+  apply_assignments(*reference, sets_for("reference", o.sets));
+
+  // The video's frame size is the composition's; the writer checks ffmpeg and the path now.
+  std::optional<VideoWriter> video;
+  if (!o.video.empty()) {
+    const SequenceFrame probe{};
+    const RgbaImageF blank{w, h, {}};
+    SequenceImages im{probe, std::vector<const RgbaImageF*>(variants.size(), &blank), nullptr, nullptr};
+    const RgbaImage8 first = compose(im, labels, w, h);
+    video.emplace(o.video, first.width, first.height, static_cast<int>(std::lround(std::min(o.fps, 120.0f))));
+  }
+  const fs::path frames_tmp = o.out.empty() ? fs::path() : fs::path(o.out + ".tmp" + std::to_string(::getpid()));
+  if (!o.out.empty()) {
+    fs::remove_all(frames_tmp);
+    fs::create_directories(frames_tmp);
+  }
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ec;
+      if (!dir.empty()) fs::remove_all(dir, ec);
+    }
+  } cleanup{frames_tmp};
+
+  auto ctx = open_gl(o.gl, {{w, h}});
+  const gl::ContextInfo& gi = ctx->info();
+  Renderer renderer(scene, w, h);
+  renderer.settings.exposure = o.exposure;
+  reference->load(renderer.shaders());
+  const bool images = video || !o.out.empty();
+  std::function<void(const SequenceImages&)> on_frame;
+  if (images)
+    on_frame = [&](const SequenceImages& im) {
+      const RgbaImage8 frame = compose(im, labels, w, h);
+      if (video) video->add_frame(frame);
+      if (!o.out.empty()) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05d.png", im.frame.index);
+        write_png((frames_tmp / name).string(), frame);
+      }
+    };
+  const SequenceResults r = run_sequence(renderer, variants, *reference, spec, on_frame);
+
+  const std::string clock = gi.software ? "cpu" : "gpu";
+  if (video) video->finish();
+  if (!o.out.empty()) {
+    if (fs::exists(o.out)) fs::remove(o.out);  // empty (checked above)
+    fs::rename(frames_tmp, o.out);
+    cleanup.dir.clear();
+  }
+  if (!o.plot.empty()) write_text_file_atomic(o.plot, sequence_svg(r));
+  write_text_file_atomic(o.json, sequence_json({gi.renderer, gi.version, clock}, build_revision(), r).dump(2) + "\n");
+  std::printf("scene %s, path %s, %d frames at %.0f fps, %dx%d, truth every %d\n%s", r.scene.c_str(), r.path.c_str(),
+              o.frames, o.fps, w, h, o.truth_every, sequence_table(r).c_str());
+  for (const SequenceSummary& s : r.summary)
+    if (s.nonfinite) return 1;
+  return 0;
+}
+
+}  // namespace
+
+Command add_sequence_command(CLI::App& app) {
+  auto o = std::make_shared<SequenceOptions>();
+  CLI::App* c = app.add_subcommand("sequence", "Render a camera path; score every frame and the flicker, ghosting and convergence.");
+  c->add_option("--scene", o->scene, "Built-in scene name or a .json/.obj path.")->capture_default_str();
+  c->add_option("--path", o->path, "The scene's camera path, or 'still' (default: the scene's path option or first path).");
+  c->add_option("--frames", o->frames, "Frames to render (frame i at time i / fps).")->required();
+  c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all but the reference).");
+  c->add_option("--preset", o->presets, "Add a named preset as its own technique (repeatable).");
+  c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
+  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--truth-every", o->truth_every,
+                "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
+  c->add_option("--fps", o->fps, "Frames per second of scene time.")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();
+  c->add_option("--out", o->out, "A new directory for the labelled PNG frames.");
+  c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");
+  c->add_option("--plot", o->plot, "SVG: PSNR per frame and flicker per frame.");
+  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  return {c, [o] { return run_sequence_command(*o); }};
+}
+
+}  // namespace ssr

@@ -1,0 +1,288 @@
+#include "eval/sequence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "eval/results.h"
+#include "eval/svg_plot.h"
+#include "eval/temporal.h"
+#include "scene/animation.h"
+#include "shared/bindings.h"
+
+namespace ssr {
+
+CameraPath sequence_path(const Scene& scene, const std::string& name) {
+  const Animation& a = scene.animation;
+  if (name == kStillPath || (name.empty() && a.paths.empty())) {
+    const Camera& c = scene.cameras.front();
+    return CameraPath{kStillPath, "the default camera, standing still", {CameraKey{0.0f, c.position, c.target, c.fov_y_deg, false}}};
+  }
+  if (name.empty()) return a.paths[static_cast<std::size_t>(std::max(a.default_path, 0))];
+  return find_path(scene, name);
+}
+
+namespace {
+
+TemporalFrame read_temporal(const Renderer& r) {
+  TemporalFrame f;
+  f.width = r.width();
+  f.height = r.height();
+  const RgbaImageF motion = r.read_texture(r.motion());
+  const std::vector<std::uint16_t> material = r.read_material();
+  const std::vector<float> depth = r.read_depth();
+  const std::size_t n = depth.size();
+  f.motion.resize(n);
+  f.object.resize(n);
+  f.reflective.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    f.motion[i] = {motion.pixels[i * 4], motion.pixels[i * 4 + 1]};
+    const bool geometry = depth[i] > 0.0f;
+    f.object[i] = geometry ? static_cast<std::uint32_t>(material[i * 4 + 3]) + 1u : 0u;
+    f.reflective[i] = geometry && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;
+  }
+  return f;
+}
+
+// Squared error sums of display values (RGB) for the two ghosting groups.
+struct GhostSums {
+  double recent = 0, elsewhere = 0;
+  std::size_t recent_px = 0, elsewhere_px = 0;
+};
+
+std::optional<double> psnr_of(double sum, std::size_t px) {
+  if (px == 0) return std::nullopt;
+  return psnr_from_rmse(std::sqrt(sum / (3.0 * static_cast<double>(px))));
+}
+
+struct TechniqueRun {
+  std::unique_ptr<Technique> technique;
+  RgbaImageF reflected_before;  // its reflected radiance on the previous truth frame
+  std::vector<float> excess;    // every pair's pixels
+  GhostSums ghost;
+};
+
+}  // namespace
+
+SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& variants, Technique& reference,
+                             const SequenceSpec& spec,
+                             const std::function<void(const SequenceImages&)>& on_frame) {
+  const Scene& scene = renderer.scene();
+  const CameraPath path = sequence_path(scene, spec.path);
+  SequenceResults out;
+  out.scene = scene.name;
+  out.path = path.name;
+  out.width = renderer.width();
+  out.height = renderer.height();
+  out.fps = spec.fps;
+  out.truth_every = spec.truth_every;
+
+  std::vector<TechniqueRun> runs;
+  for (const Variant& v : variants) {
+    TechniqueRun run;
+    run.technique = create_technique(v.technique);
+    apply_assignments(*run.technique, v.assignments);
+    run.technique->load(renderer.shaders());
+    runs.push_back(std::move(run));
+  }
+
+  TemporalFrame before;
+  std::vector<int> ages;
+  RgbaImageF truth_reflected_before;
+  bool truth_before = false;
+  float time_before = 0;
+  for (int i = 0; i < spec.frames; ++i) {
+    const float t = static_cast<float>(i) / spec.fps;
+    const bool cut = i > 0 && cut_between(path, time_before, t);
+    const FrameRequest request(camera_at(path, t, scene.cameras.front()), FrameTime{i, t, cut});
+    renderer.render_inputs(request, nullptr);
+    const TemporalFrame now = read_temporal(renderer);
+    const std::vector<int> previous = i > 0 ? reproject(now, before) : std::vector<int>(now.motion.size(), -1);
+    ages = update_ages(previous, now, before, ages, cut, kGhostingFrames);
+
+    const int k = spec.truth_every;
+    const bool truth = i % k == 0 || (k > 1 && i % k == 1);
+    std::optional<ScoredFrame> scored;
+    if (truth) scored.emplace(renderer, request, reference);
+    const bool pair = truth && truth_before && i > 0 && !cut;
+
+    SequenceFrame frame{i, t, cut, truth, {}};
+    std::vector<RgbaImageF> finals(runs.size());
+    for (std::size_t v = 0; v < runs.size(); ++v) {
+      TechniqueRun& run = runs[v];
+      SequenceTechniqueFrame r;
+      r.technique = variants[v].technique;
+      r.label = variants[v].label();
+      if (truth) {
+        ScoredFrame::Score s = scored->score(*run.technique);
+        r.nonfinite = s.error.nonfinite;
+        r.error = s.error;
+        r.breakdown = std::move(s.breakdown);
+        const std::vector<PixelClass>& cls = scored->classes();
+        for (std::size_t p = 0; p < cls.size(); ++p) {
+          if (cls[p] == PixelClass::NotReflective) continue;
+          double e = 0;
+          for (std::size_t c = 0; c < 3; ++c) {
+            const double d = s.display.pixels[p * 4 + c] - scored->truth().pixels[p * 4 + c];
+            e += std::isfinite(d) ? d * d : 1.0;
+          }
+          if (ages[p] < kGhostingFrames) {
+            run.ghost.recent += e;
+            ++run.ghost.recent_px;
+          } else {
+            run.ghost.elsewhere += e;
+            ++run.ghost.elsewhere_px;
+          }
+        }
+        if (pair) {
+          const std::vector<float> ex = excess_change(previous, now, before, s.reflected, run.reflected_before,
+                                                      scored->truth_reflected(), truth_reflected_before);
+          if (!ex.empty()) {
+            double sum = 0;
+            for (float e : ex) sum += e;
+            r.instability = sum / static_cast<double>(ex.size());
+            run.excess.insert(run.excess.end(), ex.begin(), ex.end());
+          }
+        }
+        run.reflected_before = std::move(s.reflected);
+        finals[v] = std::move(s.display);
+      } else {
+        renderer.render(request, *run.technique, ViewMode::Final, nullptr);
+        const RgbaImageF color = renderer.read_texture(renderer.color());
+        r.nonfinite = count_nonfinite(renderer.read_texture(renderer.reflection()).pixels) + count_nonfinite(color.pixels);
+        if (on_frame) finals[v] = display_values(color, renderer.settings.exposure);
+      }
+      frame.results.push_back(std::move(r));
+    }
+    if (on_frame) {
+      SequenceImages images{frame, {}, truth ? &scored->truth() : nullptr, truth ? &scored->classes() : nullptr};
+      for (const RgbaImageF& f : finals) images.technique.push_back(&f);
+      on_frame(images);
+    }
+    out.frames.push_back(std::move(frame));
+    if (truth) truth_reflected_before = scored->truth_reflected();
+    truth_before = truth;
+    before = now;
+    time_before = t;
+  }
+
+  for (std::size_t v = 0; v < runs.size(); ++v) {
+    TechniqueRun& run = runs[v];
+    SequenceSummary s;
+    s.technique = variants[v].technique;
+    s.label = variants[v].label();
+    if (!run.excess.empty()) {
+      double sum = 0;
+      for (float e : run.excess) sum += e;
+      s.instability_mean = sum / static_cast<double>(run.excess.size());
+      std::sort(run.excess.begin(), run.excess.end());
+      s.instability_p95 = run.excess[std::min(run.excess.size() - 1, run.excess.size() * 95 / 100)];
+      s.instability_pixels = run.excess.size();
+    }
+    s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
+    s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
+    s.disoccluded_pixels = run.ghost.recent_px;
+    for (const SequenceFrame& f : out.frames) {
+      const SequenceTechniqueFrame& r = f.results[v];
+      s.nonfinite += r.nonfinite;
+      if (f.truth) s.convergence.push_back(r.error ? std::optional<double>(r.error->psnr) : std::nullopt);
+    }
+    out.summary.push_back(std::move(s));
+  }
+  return out;
+}
+
+namespace {
+nlohmann::json opt(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+}  // namespace
+
+nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revision, const SequenceResults& r) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const SequenceFrame& f : r.frames) {
+    nlohmann::json results = nlohmann::json::array();
+    for (const SequenceTechniqueFrame& t : f.results) {
+      nlohmann::json j{{"technique", t.technique}, {"label", t.label}, {"nonfinite", t.nonfinite},
+                       {"error", t.error ? error_json(*t.error) : nlohmann::json(nullptr)},
+                       {"regions", t.breakdown ? breakdown_json(*t.breakdown) : nlohmann::json(nullptr)},
+                       {"instability", opt(t.instability)}};
+      results.push_back(std::move(j));
+    }
+    frames.push_back({{"index", f.index}, {"time", f.time}, {"cut", f.cut}, {"truth", f.truth}, {"results", results}});
+  }
+  nlohmann::json summary = nlohmann::json::array();
+  for (const SequenceSummary& s : r.summary) {
+    nlohmann::json convergence = nlohmann::json::array();
+    for (const auto& p : s.convergence) convergence.push_back(opt(p));
+    summary.push_back({{"technique", s.technique},
+                       {"label", s.label},
+                       {"instability", {{"mean", opt(s.instability_mean)}, {"p95", opt(s.instability_p95)}, {"pixels", s.instability_pixels}}},
+                       {"ghosting", {{"disoccluded_psnr", opt(s.disoccluded_psnr)}, {"elsewhere_psnr", opt(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
+                       {"convergence", convergence},
+                       {"nonfinite", s.nonfinite}});
+  }
+  return {{"device", {{"renderer", device.renderer}, {"version", device.version}, {"clock", device.clock}}},
+          {"revision", revision},
+          {"scene", r.scene},
+          {"path", r.path},
+          {"width", r.width},
+          {"height", r.height},
+          {"fps", r.fps},
+          {"truth_every", r.truth_every},
+          {"frames", frames},
+          {"summary", summary}};
+}
+
+std::string sequence_table(const SequenceResults& r) {
+  std::string o;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s\n", "technique", "mean PSNR", "flicker mean",
+                "flicker p95", "disocc. PSNR", "elsewhere");
+  o += line;
+  auto num = [](const std::optional<double>& v, const char* f) {
+    char b[32];
+    if (!v) return std::string("-");
+    std::snprintf(b, sizeof b, f, *v);
+    return std::string(b);
+  };
+  for (const SequenceSummary& s : r.summary) {
+    double sum = 0;
+    int n = 0;
+    for (const auto& p : s.convergence)
+      if (p && std::isfinite(*p)) sum += *p, ++n;
+    std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s\n", s.label.c_str(),
+                  num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB").c_str(),
+                  num(s.instability_mean, "%.5f").c_str(), num(s.instability_p95, "%.5f").c_str(),
+                  num(s.disoccluded_psnr, "%.2f dB").c_str(), num(s.elsewhere_psnr, "%.2f dB").c_str());
+    o += line;
+  }
+  return o;
+}
+
+std::string sequence_svg(const SequenceResults& r) {
+  PlotSpec error{"PSNR per frame (" + r.scene + ", path " + r.path + ")", "frame", "PSNR vs truth (dB)", false, false, {}, 800, 420};
+  PlotSpec flicker{"Flicker beyond the truth's (mean excess change per frame)", "frame", "excess change (display units)",
+                   false, false, {}, 800, 420};
+  for (std::size_t v = 0; v < r.summary.size(); ++v) {
+    PlotSeries e{r.summary[v].label, {}, {}, true}, f{r.summary[v].label, {}, {}, true};
+    for (const SequenceFrame& fr : r.frames) {
+      const SequenceTechniqueFrame& t = fr.results[v];
+      if (t.error) e.points.emplace_back(fr.index, t.error->psnr);
+      if (t.instability) f.points.emplace_back(fr.index, *t.instability);
+    }
+    error.series.push_back(std::move(e));
+    flicker.series.push_back(std::move(f));
+  }
+  // Two documents stacked as nested <svg> elements of one.
+  auto body = [](const std::string& doc) { return doc.substr(doc.find("<svg")); };
+  std::string top = body(svg_plot(error)), bottom = body(svg_plot(flicker));
+  bottom.insert(4, " y=\"420\"");
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"800\" height=\"840\">\n" +
+         top + bottom + "</svg>\n";
+}
+
+}  // namespace ssr

@@ -1,0 +1,66 @@
+#include "eval/temporal.h"
+
+#include <cmath>
+
+namespace ssr {
+
+std::vector<int> reproject(const TemporalFrame& now, const TemporalFrame& before) {
+  const int w = now.width, h = now.height;
+  std::vector<int> out(static_cast<std::size_t>(w) * h, -1);
+  if (before.width != w || before.height != h) return out;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * w + x;
+      const glm::vec2 m = now.motion[i];
+      if (!std::isfinite(m.x) || !std::isfinite(m.y)) continue;
+      // GL pixel centre (y up) + motion -> the previous frame's pixel (row 0 = top).
+      const float px = static_cast<float>(x) + 0.5f + m.x;
+      const float py = static_cast<float>(h - 1 - y) + 0.5f + m.y;
+      if (px < 0 || py < 0 || px >= static_cast<float>(w) || py >= static_cast<float>(h)) continue;
+      const int bx = static_cast<int>(px), by = h - 1 - static_cast<int>(py);
+      const std::size_t j = static_cast<std::size_t>(by) * w + bx;
+      if (before.object[j] == now.object[i]) out[i] = static_cast<int>(j);
+    }
+  return out;
+}
+
+std::vector<float> excess_change(const std::vector<int>& previous, const TemporalFrame& now,
+                                 const TemporalFrame& before, const RgbaImageF& technique_now,
+                                 const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                 const RgbaImageF& truth_before) {
+  std::vector<float> out;
+  auto change = [](const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_t j) {
+    float s = 0;
+    for (std::size_t c = 0; c < 3; ++c) s += std::abs(a.pixels[i * 4 + c] - b.pixels[j * 4 + c]);
+    return s / 3.0f;
+  };
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0 || !now.reflective[i]) continue;
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (!before.reflective[j]) continue;
+    const float excess = change(technique_now, i, technique_before, j) - change(truth_now, i, truth_before, j);
+    // A non-finite image is flicker without bound; the metric must not hide it as NaN.
+    out.push_back(std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f);
+  }
+  return out;
+}
+
+std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,
+                             const TemporalFrame& before, const std::vector<int>& ages_before,
+                             bool cut, int settled) {
+  std::vector<int> ages(previous.size(), 0);
+  if (ages_before.empty()) {
+    ages.assign(previous.size(), settled);
+    return ages;
+  }
+  if (cut) return ages;
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0) continue;  // disoccluded: 0
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (now.reflective[i] && !before.reflective[j]) continue;  // newly reflective: 0
+    ages[i] = std::min(ages_before[j] + 1, settled);
+  }
+  return ages;
+}
+
+}  // namespace ssr

@@ -1,0 +1,44 @@
+// Temporal metrics of `ssrlab sequence` (CPU, no GL): reprojection by the G-buffer's motion
+// vectors, flicker beyond the truth's, and the age of each pixel's history (for ghosting).
+//
+// Reprojection is nearest-pixel: a pixel's previous position (its centre + motion, shared/frame.h)
+// is rounded to a pixel of the previous frame; it counts as "seen before" only when that pixel
+// shows the same object. A surface that was hidden behind another one, or off screen, is
+// disoccluded; self-occlusion within one object is not detected (a documented limit).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/image.h"
+
+namespace ssr {
+
+// What the temporal metrics read of one frame (row 0 = top, as read-back images).
+struct TemporalFrame {
+  int width = 0, height = 0;
+  std::vector<glm::vec2> motion;       // pixels, GL convention (+y up)
+  std::vector<std::uint32_t> object;   // mesh index + 1; 0 = background (sky)
+  std::vector<bool> reflective;        // the pixel does reflection work
+};
+
+// For each pixel of `now`: the index of the pixel it was in `before`, or -1 when it was off
+// screen or another object was there (disoccluded).
+std::vector<int> reproject(const TemporalFrame& now, const TemporalFrame& before);
+
+// Flicker beyond the scene's: on pixels reflective in both frames and seen before, the change
+// of the technique's image from its reprojected previous value minus the truth's change,
+// clamped at 0 (mean over RGB of display values). One value per such pixel.
+std::vector<float> excess_change(const std::vector<int>& previous, const TemporalFrame& now,
+                                 const TemporalFrame& before, const RgbaImageF& technique_now,
+                                 const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                 const RgbaImageF& truth_before);
+
+// Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
+// empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.
+std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,
+                             const TemporalFrame& before, const std::vector<int>& ages_before,
+                             bool cut, int settled);
+
+}  // namespace ssr

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# `ssrlab sequence`: the JSON's fields, determinism run to run, zero flicker for a deterministic
+# technique on a still camera, a cut on the `cut` path, PNG frames, the video (when ffmpeg is
+# present), and bad input: exit 2, one sentence, nothing written.
+set -eu
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+seq() { "$SSRLAB" sequence --size 96x54 --set reference.samples=8 "$@"; }
+
+seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/a.json" \
+  --plot "$tmp/a.svg" --out "$tmp/frames" > "$tmp/a.txt"
+seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/b.json" > /dev/null
+seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > /dev/null
+seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > /dev/null
+
+python3 - "$tmp" <<'PY'
+import json, math, os, sys
+tmp = sys.argv[1]
+a = json.load(open(f"{tmp}/a.json"))
+assert {"device", "revision", "scene", "path", "width", "height", "fps", "truth_every", "frames", "summary"} <= a.keys()
+assert a["path"] == "cut" and len(a["frames"]) == 8
+assert any(f["cut"] for f in a["frames"]), "the cut path has no cut"
+for f in a["frames"]:
+    assert {"index", "time", "cut", "truth", "results"} <= f.keys()
+    for r in f["results"]:
+        assert {"technique", "label", "error", "regions", "nonfinite"} <= r.keys()
+        assert r["nonfinite"] == 0, (f["index"], r["technique"])
+        assert math.isfinite(r["error"]["psnr"]) and "all" in r["regions"]
+for s in a["summary"]:
+    assert {"technique", "label", "instability", "ghosting", "convergence"} <= s.keys()
+    assert set(s["instability"]) >= {"mean", "p95"} and set(s["ghosting"]) >= {"disoccluded_psnr", "elsewhere_psnr"}
+    assert len(s["convergence"]) == 8
+    assert s["instability"]["mean"] >= 0 and s["instability"]["p95"] >= s["instability"]["mean"] * 0.5
+# Run to run: the same numbers (the device and revision are the same too).
+b = json.load(open(f"{tmp}/b.json"))
+assert a["frames"] == b["frames"] and a["summary"] == b["summary"], "the sequence is not deterministic"
+# A still camera on a scene where nothing moves, deterministic techniques: no flicker at all.
+still = json.load(open(f"{tmp}/still.json"))
+for s in still["summary"]:
+    assert s["instability"]["mean"] == 0 and s["instability"]["p95"] == 0, s
+# --truth-every 2: truth at frames 0, 1 (a pair), 2, 3.
+every = json.load(open(f"{tmp}/every.json"))
+assert [f["truth"] for f in every["frames"]] == [True, True, True, True]
+assert os.path.getsize(f"{tmp}/a.svg") > 1000 and open(f"{tmp}/a.svg").read().count("<svg") == 3
+assert sorted(os.listdir(f"{tmp}/frames")) == [f"frame_{i:05d}.png" for i in range(8)]
+PY
+grep -q "flicker mean" "$tmp/a.txt"
+
+if command -v ffmpeg > /dev/null && command -v ffprobe > /dev/null; then
+  seq --scene gallery --path pan --frames 5 --techniques linear --json "$tmp/v.json" --video "$tmp/v.mp4" > /dev/null
+  n=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$tmp/v.mp4")
+  [ "$n" = 5 ] || { echo "video has $n frames, not 5"; exit 1; }
+else
+  echo "sequence.sh: ffmpeg missing, video check skipped"
+fi
+
+# Bad input: exit 2, one line on stderr, nothing written.
+bad() {
+  local out="$tmp/bad"
+  rm -rf "$out"; mkdir "$out"
+  set +e
+  env ${NO_FFMPEG:+PATH=/nonexistent} "$SSRLAB" sequence --size 64x36 --json "$out/r.json" "$@" 2> "$out/err.txt" > /dev/null
+  local rc=$?
+  set -e
+  [ $rc -eq 2 ] || { echo "expected exit 2, got $rc for: $*"; cat "$out/err.txt"; exit 1; }
+  [ "$(wc -l < "$out/err.txt")" -eq 1 ] || { echo "expected one line for: $*"; cat "$out/err.txt"; exit 1; }
+  [ "$(ls "$out")" = "err.txt" ] || { echo "files left behind for: $*"; ls "$out"; exit 1; }
+}
+bad --scene gallery --path nowhere --frames 2
+bad --scene gallery --frames 0
+bad --scene gallery --frames 2 --truth-every 0
+bad --scene gallery --frames 2 --fps 0
+bad --scene gallery --frames 2 --video "$tmp/missing-dir/v.mp4"
+bad --scene gallery --frames 2 --video "$tmp/bad/v.gif"
+bad --scene gallery --frames 2 --out "$tmp"
+bad --scene gallery --frames 2 --techniques nothing
+NO_FFMPEG=1 bad --scene gallery --frames 2 --video "$tmp/bad/v.mp4"
+echo "sequence: ok"

@@ -1,0 +1,81 @@
+// The temporal metrics' CPU parts: reprojection, flicker beyond the truth's, history ages.
+#include <gtest/gtest.h>
+
+#include "eval/temporal.h"
+
+using namespace ssr;
+
+namespace {
+
+TemporalFrame frame(int w, int h, glm::vec2 motion, std::uint32_t object = 1) {
+  TemporalFrame f;
+  f.width = w;
+  f.height = h;
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  f.motion.assign(n, motion);
+  f.object.assign(n, object);
+  f.reflective.assign(n, true);
+  return f;
+}
+
+RgbaImageF image(int w, int h, float v) {
+  return RgbaImageF{w, h, std::vector<float>(static_cast<std::size_t>(w) * h * 4, v)};
+}
+
+}  // namespace
+
+TEST(Temporal, StillFrameReprojectsToItself) {
+  const TemporalFrame a = frame(8, 6, {0, 0}), b = frame(8, 6, {0, 0});
+  const std::vector<int> q = reproject(b, a);
+  for (std::size_t i = 0; i < q.size(); ++i) EXPECT_EQ(q[i], static_cast<int>(i));
+}
+
+TEST(Temporal, MotionShiftsAndLeavesTheScreen) {
+  // Everything was 2 pixels to the right (+x) and 1 up (+y, GL) a frame ago.
+  const TemporalFrame before = frame(8, 6, {0, 0}), now = frame(8, 6, {2, 1});
+  const std::vector<int> q = reproject(now, before);
+  // Pixel (x=1, row 3 from the top) came from (3, row 2).
+  EXPECT_EQ(q[3 * 8 + 1], 2 * 8 + 3);
+  EXPECT_EQ(q[3 * 8 + 6], -1);  // x + 2 = 8: off screen
+  EXPECT_EQ(q[0 * 8 + 1], -1);  // the top row came from above the screen
+}
+
+TEST(Temporal, AnotherObjectThereIsADisocclusion) {
+  TemporalFrame before = frame(4, 4, {0, 0}), now = frame(4, 4, {0, 0});
+  before.object[5] = 7;  // something else stood in front of pixel 5
+  const std::vector<int> q = reproject(now, before);
+  EXPECT_EQ(q[5], -1);
+  EXPECT_EQ(q[6], 6);
+}
+
+TEST(Temporal, ExcessChangeIsChangeBeyondTheTruths) {
+  const TemporalFrame a = frame(4, 2, {0, 0}), b = frame(4, 2, {0, 0});
+  const std::vector<int> q = reproject(b, a);
+  // Truth brightens by 0.1 everywhere; the technique by 0.1 (same), then by 0.3 (0.2 too much),
+  // then not at all (less change than the truth: no excess).
+  const RgbaImageF t0 = image(4, 2, 0.5f), t1 = image(4, 2, 0.6f);
+  auto near = [](float a, float b) { return std::abs(a - b) < 1e-5f; };
+  for (float v : excess_change(q, b, a, image(4, 2, 0.2f), image(4, 2, 0.1f), t1, t0)) EXPECT_TRUE(near(v, 0.0f));
+  for (float v : excess_change(q, b, a, image(4, 2, 0.4f), image(4, 2, 0.1f), t1, t0)) EXPECT_TRUE(near(v, 0.2f));
+  for (float v : excess_change(q, b, a, image(4, 2, 0.1f), image(4, 2, 0.1f), t1, t0)) EXPECT_TRUE(near(v, 0.0f));
+  // A non-finite technique pixel counts as the largest flicker, not as NaN.
+  RgbaImageF bad = image(4, 2, 0.1f);
+  bad.pixels[0] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(excess_change(q, b, a, bad, image(4, 2, 0.1f), t1, t0)[0], 1.0f);
+}
+
+TEST(Temporal, AgesGrowAndRestart) {
+  const TemporalFrame a = frame(4, 2, {0, 0});
+  TemporalFrame b = a;
+  b.reflective[2] = true;
+  TemporalFrame a2 = a;
+  a2.reflective[2] = false;  // pixel 2 becomes reflective in b
+  const std::vector<int> q = reproject(b, a2);
+  std::vector<int> ages = update_ages(q, b, a2, {}, false, 4);
+  for (int v : ages) EXPECT_EQ(v, 4);  // the first frame is settled
+  ages.assign(ages.size(), 1);
+  const std::vector<int> next = update_ages(q, b, a2, ages, false, 4);
+  EXPECT_EQ(next[0], 2);
+  EXPECT_EQ(next[2], 0);  // newly reflective
+  for (int v : update_ages(q, b, a2, ages, /*cut=*/true, 4)) EXPECT_EQ(v, 0);
+}
