@@ -36,6 +36,7 @@
 #include "shared/bindings.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
+#include "scene/animation.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_io.h"
 #include "techniques/technique.h"
@@ -223,7 +224,17 @@ class Viewer {
 
   int fb_w_ = 0, fb_h_ = 0;
   int frame_index_ = 0;  // the frame being drawn, in the sequence of drawn frames
-  FrameRequest current_frame() const { return FrameRequest(orbit_.cam, FrameTime{frame_index_, 0.0f}); }
+  FrameRequest current_frame() const { return FrameRequest(orbit_.cam, FrameTime{frame_index_, time_, cut_}); }
+
+  // Playback: scene time (object motion) and, with a path chosen, the camera along it. Time
+  // advances by speed / 30 s a drawn frame (not by the wall clock: reproducible screenshots).
+  int path_ = -1;  // index into the scene's paths; -1: the free (orbit) camera
+  float time_ = 0.0f, speed_ = 1.0f;
+  bool playing_ = false, loop_ = true, cut_ = false, cut_next_ = false;
+  void advance_time();
+  void set_time(float t);
+  void time_panel();
+  bool view_offered(int view) const;
   int view_ = VIEW_FINAL;
   int compare_ = CompareOff;
   float split_ = 0.5f, diff_scale_ = 0.25f;
@@ -261,6 +272,9 @@ void Viewer::open_window(int w, int h) {
 
 void Viewer::load_scene_spec(const std::string& spec, const std::string& camera_name) {
   Scene scene = load_scene(spec);
+  path_ = scene.animation.default_path;
+  time_ = 0.0f;
+  cut_next_ = true;
   const Camera cam = camera_name.empty() ? scene.cameras.front() : scene.camera(camera_name);
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
@@ -361,10 +375,10 @@ void Viewer::apply_preset(const ViewerPreset& p) {
 std::string Viewer::frame_key() const {
   const Camera& c = orbit_.cam;
   char buf[320];
-  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d",
+  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d|%g",
                 static_cast<unsigned long long>(renderer_->scene_id()), lighting_revision_, c.position.x,
                 c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view_,
-                renderer_->settings.exposure, fb_w_, fb_h_);
+                renderer_->settings.exposure, fb_w_, fb_h_, time_);
   return buf;
 }
 
@@ -443,6 +457,89 @@ void Viewer::run_command(const ScriptCommand& c) {
   } else if (c.verb == "minimise") glfwIconifyWindow(window_);
   else if (c.verb == "restore") glfwRestoreWindow(window_);
   else if (c.verb == "reload") reload();
+  else if (c.verb == "path") {
+    if (a == "free") path_ = -1;
+    else {
+      const Animation& anim = renderer_->scene().animation;
+      find_path(renderer_->scene(), a);  // throws InputError naming the paths
+      for (std::size_t i = 0; i < anim.paths.size(); ++i)
+        if (anim.paths[i].name == a) path_ = static_cast<int>(i);
+    }
+    set_time(time_);
+  } else if (c.verb == "time") set_time(std::stof(a));
+  else if (c.verb == "play") playing_ = true;
+  else if (c.verb == "pause") playing_ = false;
+}
+
+// The next drawn frame's time: one step further when playing; wraps (a cut) or stops at the end.
+void Viewer::advance_time() {
+  const float duration = renderer_->scene().animation.duration;
+  float t = time_;
+  if (playing_) t += speed_ / 30.0f;
+  if (t > duration) {
+    if (loop_ && duration > 0) {
+      t = 0.0f;
+      cut_next_ = true;
+    } else {
+      t = duration;
+      playing_ = false;
+    }
+  }
+  set_time(t);
+}
+
+// Moves to scene time `t`: the path's camera (a cut when the path cuts in between, or when the
+// time jumps back) and the object motion.
+void Viewer::set_time(float t) {
+  const float before = time_;
+  time_ = std::max(t, 0.0f);
+  const Animation& anim = renderer_->scene().animation;
+  if (path_ >= 0 && path_ < static_cast<int>(anim.paths.size())) {
+    const CameraPath& p = anim.paths[static_cast<std::size_t>(path_)];
+    const std::string name = orbit_.cam.name;
+    Camera c = camera_at(p, time_, cameras_.front());
+    c.name = name;
+    orbit_.from_camera(c);
+    if (cut_between(p, std::min(before, time_), std::max(before, time_))) cut_next_ = true;
+  }
+  if (time_ < before) cut_next_ = true;
+}
+
+void Viewer::time_panel() {
+  const Animation& anim = renderer_->scene().animation;
+  std::vector<std::string> names = {"free camera"};
+  for (const CameraPath& p : anim.paths) names.push_back(p.name);
+  int current = path_ + 1;
+  if (combo("path", &current, names)) {
+    path_ = current - 1;
+    set_time(time_);
+  }
+  if (path_ >= 0 && ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s", anim.paths[static_cast<std::size_t>(path_)].description.c_str());
+  if (ImGui::Button(playing_ ? "pause" : "play")) playing_ = !playing_;
+  ImGui::SameLine();
+  if (ImGui::Button("step")) set_time(time_ + speed_ / 30.0f);
+  ImGui::SameLine();
+  ImGui::Checkbox("loop", &loop_);
+  ImGui::SameLine();
+  if (ImGui::Button("reset history")) cut_next_ = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the next frame is a camera cut: every technique's history restarts");
+  float t = time_;
+  if (ImGui::SliderFloat("time", &t, 0.0f, std::max(anim.duration, 0.01f), "%.2f s")) set_time(t);
+  ImGui::SliderFloat("speed", &speed_, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+  ImGui::TextDisabled("frame %d, %s", frame_index_, renderer_->history_valid() ? "history carried" : "history restarted");
+}
+
+// Debug views are offered for the techniques that produce them (their declarations).
+bool Viewer::view_offered(int view) const {
+  if (view == kViewTraceable || view >= static_cast<int>(view_table().size())) return true;
+  const ViewInfo& v = view_table()[static_cast<std::size_t>(view)];
+  if (!v.debug) return true;
+  for (int i = 0; i < (compare_ == CompareOff ? 1 : 2); ++i) {
+    const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
+    if (std::find(d.begin(), d.end(), v.mode) != d.end()) return true;
+  }
+  return false;
 }
 
 void Viewer::handle_input(float dt) {
@@ -672,8 +769,13 @@ void Viewer::draw_ui(double dt) {
       }
     }
   }
+  if (ImGui::CollapsingHeader("time and camera paths")) time_panel();
   if (ImGui::CollapsingHeader("view and compare", ImGuiTreeNodeFlags_DefaultOpen)) {
-    combo("view", &view_, view_names_);
+    if (ImGui::BeginCombo("view", view_names_[static_cast<std::size_t>(view_)].c_str())) {
+      for (int v = 0; v < static_cast<int>(view_names_.size()); ++v)
+        if (view_offered(v) && ImGui::Selectable(view_names_[static_cast<std::size_t>(v)].c_str(), v == view_)) view_ = v;
+      ImGui::EndCombo();
+    }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("G-buffer channels, lit colour, reflection, confidence, tracer heat maps, PPR buffers,\n"
                         "and 'traceable': the reference's classes (green traceable, red missing, blue sky)");
@@ -773,6 +875,10 @@ void Viewer::update_traceable_mask() {
 void Viewer::render() {
   renderer_->resize(fb_w_, fb_h_);
   ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
+  advance_time();
+  cut_ = cut_next_;
+  cut_next_ = false;
+  if (!view_offered(view_)) view_ = VIEW_FINAL;  // the technique changed: its debug view is gone
   if (!composed_ || composed_.width() != fb_w_ || composed_.height() != fb_h_) {
     composed_ = gl::Texture2D("viewer composed", GL_RGBA8, fb_w_, fb_h_);
     for (Side& s : sides_) {

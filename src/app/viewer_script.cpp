@@ -28,6 +28,8 @@ const std::map<std::string, Arg>& verbs() {
       {"ambient", Arg::NonNegative}, {"frames", Arg::Count},    {"screenshot", Arg::Png},
       {"preset-save", Arg::Text}, {"preset-load", Arg::Text},   {"resize", Arg::Size},
       {"minimise", Arg::None},    {"restore", Arg::None},       {"reload", Arg::None},
+      {"path", Arg::Text},        {"time", Arg::NonNegative},   {"play", Arg::None},
+      {"pause", Arg::None},
   };
   return v;
 }

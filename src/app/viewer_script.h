@@ -15,6 +15,9 @@
 //   preset-save PATH       preset-load PATH       (JSON presets, see viewer_preset.h)
 //   resize WxH             minimise               restore
 //   reload                 F5: reload the shaders
+//   path NAME|free         follow the scene's camera path NAME (free: the orbit camera)
+//   time SECONDS           jump to a scene time (object motion and the path's camera)
+//   play                   pause              (playback: speed/30 s a drawn frame)
 //
 // The whole file is checked before the window opens: an unknown command or a bad argument is
 // an InputError naming the file and line. Errors while running (a scene that does not load)

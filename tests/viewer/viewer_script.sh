@@ -71,6 +71,41 @@ print(f'mean value: ambient 0.3 -> {mean(s):.1f}, ambient 0 -> {mean(d):.1f}')
 assert mean(d) < mean(s), 'ambient 0 did not darken the frame'
 PY
 
+# Playback: scene time moves objects; a path moves the camera; the motion view shows it.
+cat > play.txt <<'SCRIPT'
+path slide
+time 0
+frames 1
+screenshot t0.png
+time 2
+frames 1
+screenshot t2.png
+path orbit
+play
+view motion
+frames 4
+screenshot motion.png
+pause
+path free
+frames 2
+screenshot still-motion.png
+SCRIPT
+view --scene gallery --size 160x90 --script play.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - "$here" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from png import read_png
+a, b = read_png('t0.png'), read_png('t2.png')
+changed = sum(1 for ra, rb in zip(a[3], b[3]) for x in range(0, len(ra), 4) if ra[x:x+3] != rb[x:x+3])
+print(f'playback: {changed} pixels changed between t=0 and t=2 on the slide path')
+assert changed > 200, 'scene time did not move anything'
+lit = lambda im: sum(1 for r in im[3] for x in range(0, len(r), im[2]) if max(r[x:x+3]) > 20)
+m, s = read_png('motion.png'), read_png('still-motion.png')
+print(f'motion view: {lit(m)} moving pixels while orbiting, {lit(s)} when paused')
+assert lit(m) > m[0] * m[1] // 4, 'orbiting shows no motion vectors'
+assert lit(s) == 0, 'a paused, free camera still shows motion'
+PY
+
 # Errors: one sentence on stderr, exit 2, naming the file and line.
 expect2() {  # expect2 PATTERN ARGS...
   local pattern=$1; shift
