@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -38,6 +39,77 @@ bool unit(const glm::vec3& v) { return finite(v) && std::abs(glm::length(v) - 1.
 
 [[noreturn]] void fail(const Scene& s, const std::string& what) {
   throw InputError("scene '" + s.name + "': " + what + ".");
+}
+
+void validate_animation(const Scene& s) {
+  const Animation& a = s.animation;
+  if (!finite(a.duration) || a.duration < 0) fail(s, "animation duration must be finite and >= 0");
+  const int npaths = static_cast<int>(a.paths.size());
+  if (a.default_path < -1 || a.default_path >= npaths)
+    fail(s, "animation default path index is out of range");
+  for (std::size_t i = 0; i < a.paths.size(); ++i) {
+    const CameraPath& p = a.paths[i];
+    if (p.name.empty()) fail(s, "camera path " + std::to_string(i) + " has no name");
+    const std::string where = "camera path '" + p.name + "' ";
+    // Names are chosen on command lines (path=NAME inside "scene:key=value,..."), so no
+    // separators or spaces.
+    for (char c : p.name)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+        fail(s, where + "may use only letters, digits, '_', '-' and '.' in its name");
+    for (std::size_t j = 0; j < i; ++j)
+      if (a.paths[j].name == p.name) fail(s, where + "is defined twice");
+    if (p.keys.empty()) fail(s, where + "has no keys");
+    for (std::size_t j = 0; j < p.keys.size(); ++j) {
+      const CameraKey& k = p.keys[j];
+      const std::string kw = where + "key " + std::to_string(j) + " ";
+      if (!finite(k.time) || k.time < 0) fail(s, kw + "time must be finite and >= 0");
+      if (j > 0 && !(k.time > p.keys[j - 1].time))
+        fail(s, kw + "time must be greater than the previous key's (times strictly increase)");
+      if (k.cut && j == 0) fail(s, kw + "is a cut, but the first key cannot be one");
+      if (!finite(k.position) || !finite(k.target)) fail(s, kw + "has a non-finite vector");
+      const glm::vec3 fwd = k.target - k.position;
+      if (glm::length(fwd) < 1e-6f) fail(s, kw + "target equals its position");
+      if (!s.cameras.empty() && glm::length(glm::cross(fwd, s.cameras[0].up)) <
+                                    1e-6f * glm::length(fwd) * glm::length(s.cameras[0].up))
+        fail(s, kw + "view direction is parallel to the default camera's up vector");
+      if (!finite(k.fov_y_deg) || k.fov_y_deg <= 1.0f || k.fov_y_deg >= 179.0f)
+        fail(s, kw + "fov must be in (1,179) degrees");
+    }
+  }
+  const int nmeshes = static_cast<int>(s.meshes.size());
+  for (std::size_t i = 0; i < a.objects.size(); ++i) {
+    const ObjectMotion& m = a.objects[i];
+    const std::string where = "animation object " + std::to_string(i) + " ";
+    if (m.meshes.empty()) fail(s, where + "moves no mesh");
+    for (std::size_t j = 0; j < m.meshes.size(); ++j) {
+      const int k = m.meshes[j];
+      if (k < 0 || k >= nmeshes) fail(s, where + "has a mesh index out of range");
+      if (std::find(m.meshes.begin(), m.meshes.begin() + static_cast<std::ptrdiff_t>(j), k) !=
+          m.meshes.begin() + static_cast<std::ptrdiff_t>(j))
+        fail(s, where + "lists mesh '" + s.meshes[static_cast<std::size_t>(k)].name + "' twice");
+      if (s.meshes[static_cast<std::size_t>(k)].reflector != 0)
+        fail(s, where + "moves mesh '" + s.meshes[static_cast<std::size_t>(k)].name +
+                    "', a planar reflector, but planar reflectors are fixed rectangles and "
+                    "cannot move");
+    }
+    if (!finite(m.pivot)) fail(s, where + "pivot is not finite");
+    if (m.kind == ObjectMotion::Kind::Keyframes) {
+      if (m.keys.empty()) fail(s, where + "needs at least one key");
+      for (std::size_t j = 0; j < m.keys.size(); ++j) {
+        const TransformKey& k = m.keys[j];
+        const std::string kw = where + "key " + std::to_string(j) + " ";
+        if (!finite(k.time) || k.time < 0) fail(s, kw + "time must be finite and >= 0");
+        if (j > 0 && !(k.time > m.keys[j - 1].time))
+          fail(s, kw + "time must be greater than the previous key's (times strictly increase)");
+        if (!finite(k.translate) || !finite(k.rotate_deg) || !finite(k.scale))
+          fail(s, kw + "has a non-finite vector");
+        if (k.scale.x <= 0 || k.scale.y <= 0 || k.scale.z <= 0) fail(s, kw + "scale must be > 0");
+      }
+    } else {
+      if (!unit(m.axis)) fail(s, where + "axis must be a unit vector");
+      if (!finite(m.period) || m.period == 0.0f) fail(s, where + "period must be finite and not 0");
+    }
+  }
 }
 
 }  // namespace
@@ -148,6 +220,7 @@ void validate(const Scene& s) {
         c.far_plane <= c.near_plane)
       fail(s, where + "needs 0 < near < far");
   }
+  validate_animation(s);
 }
 
 float bounding_diagonal(const Scene& scene) {

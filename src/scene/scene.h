@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/animation.h"
+
 namespace ssr {
 
 // An RGBA8 image in memory (textures, normal maps). Row 0 is the top row (as in PNG files).
@@ -99,6 +101,8 @@ struct Scene {
   std::vector<Reflector> reflectors;  // at most kMaxReflectors
   Environment environment;
   float ambient = 0.3f;             // scales the environment's diffuse (ambient) light
+  Animation animation;              // camera paths and moving meshes (animation.h); at time 0
+                                    // the meshes are as stored above
 
   static constexpr int kMaxReflectors = 16;
   static constexpr int kMaxLights = 32;
@@ -121,8 +125,9 @@ glm::vec3 material_f0(const Material& m);
 // transparent material. Albedo maps only darken, so the material's own albedo decides.
 bool has_reflective_surfaces(const Scene& scene, float reflective_f0);
 
-// Checks every invariant above (indices in range, finite values, ranges, unit vectors, counts)
-// and throws InputError with one sentence naming the first problem. Loaders call it last.
+// Checks every invariant above (indices in range, finite values, ranges, unit vectors, counts,
+// the animation's keys and motions; planar reflectors may not move) and throws InputError with
+// one sentence naming the first problem. Loaders call it last.
 void validate(const Scene& scene);
 // The lights, environment and ambient part of validate() (the viewer edits those live).
 void validate_lighting(const Scene& scene);
