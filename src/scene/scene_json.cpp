@@ -31,15 +31,35 @@
 //           or {"type": "directional", "direction": v3 (required), "color": v3, "intensity"}]
 //   "cameras": [{"name", "position", "target", "up", "fov_y" (degrees), "near", "far"}, ...]
 //       The first camera is the default; without "cameras" one camera frames the whole scene.
+//   "animation": {"duration": s >= 0 (default: the last key time of any path or keyframed
+//                               motion; 4 when there are only spins and orbits),
+//       "paths": [{"name" (required; letters, digits, _ - .), "description",
+//                  "keys" (required, non-empty): [{"time" (required), "position" (required),
+//                          "target" (required), "fov_y" (default: the default camera's),
+//                          "cut": bool (jump here at this time; not on the first key)}]}],
+//       "objects": [{"meshes": ["<mesh name>", ...] (required; every mesh of each name) and
+//                    one of
+//                      "keys": [{"time" (required), "translate", "rotate_deg", "scale"}],
+//                      "pivot": v3 (with keys; default: the meshes' bounding-box centre)
+//                    or "spin": {"axis": v3 (default [0, 1, 0]), "period" (required, s per
+//                                turn, != 0, sign = direction), "pivot": v3 (default: centre)}
+//                    or "orbit": {"axis", "period" as spin, "center": v3 (required)}}]}
+//       Times in seconds, >= 0, strictly increasing within a path or motion. Mesh names are
+//       Scene::meshes' names: a primitive's "name" (default "<type><index>"); an OBJ object's
+//       name (else the file name without .obj), plus ":<material>" when it has several.
+//       Planar reflectors cannot move. animation.h has the interpolation and motion formulas;
+//       at time 0 (a rest first key, whole turns) nothing moves.
 //
 // Transforms are M = T * Rz * Ry * Rx * S (scale first, then rotate about X, Y, Z, then
 // translate). Explicit reflector rectangles are in world space (not moved by the transform);
 // the normal is cross(bitangent, tangent).
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <map>
 #include <regex>
 #include <set>
@@ -252,19 +272,19 @@ json parse_json_file(const fs::path& path) {
   return parse_json_text(read_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
 }
 
+// "scale": a number or a v3, > 0 (1 when absent).
+glm::vec3 read_scale(const JsonReader& r, const json& obj, const std::string& where) {
+  if (!obj.contains("scale")) return glm::vec3(1.0f);
+  const std::string w = JsonReader::join(where, "scale");
+  if (obj["scale"].is_number()) return glm::vec3(r.number(obj["scale"], w, 1e-6f, 1e6f));
+  if (!obj["scale"].is_array()) r.fail_at(w, "must be a number or an array of 3 numbers");
+  return r.vec3(obj["scale"], w, 1e-6f, 1e6f);
+}
+
 glm::mat4 read_transform(const JsonReader& r, const json& obj, const std::string& where) {
   const glm::vec3 t = r.vec3(obj, where, "translate", glm::vec3(0.0f));
   const glm::vec3 rot = r.vec3(obj, where, "rotate_deg", glm::vec3(0.0f), -36000.0f, 36000.0f);
-  glm::vec3 s(1.0f);
-  if (obj.contains("scale")) {
-    const std::string w = JsonReader::join(where, "scale");
-    if (obj["scale"].is_number())
-      s = glm::vec3(r.number(obj["scale"], w, 1e-6f, 1e6f));
-    else if (obj["scale"].is_array())
-      s = r.vec3(obj["scale"], w, 1e-6f, 1e6f);
-    else
-      r.fail_at(w, "must be a number or an array of 3 numbers");
-  }
+  const glm::vec3 s = read_scale(r, obj, where);
   glm::mat4 m = glm::translate(glm::mat4(1.0f), t);
   m = glm::rotate(m, glm::radians(rot.z), glm::vec3(0, 0, 1));
   m = glm::rotate(m, glm::radians(rot.y), glm::vec3(0, 1, 0));
@@ -557,6 +577,175 @@ void read_cameras(const JsonReader& r, const json& j, Scene& s) {
   }
 }
 
+// ---- animation ------------------------------------------------------------------------------
+
+constexpr float kMaxTime = 1e6f;  // seconds, for key times and the duration
+
+// Key times: required, in [0, kMaxTime], each greater than the one before (`previous` < 0 for
+// the first key).
+float read_key_time(const JsonReader& r, const json& key, const std::string& where,
+                    float previous) {
+  const std::string w = where + ".time";
+  if (!key.contains("time")) r.fail_at(w, "is required");
+  const float t = r.number(key["time"], w, 0.0f, kMaxTime);
+  if (previous >= 0.0f && !(t > previous))
+    r.fail_at(w, "must be greater than the previous key's time " + JsonReader::fmt(previous) +
+                     " (key times strictly increase)");
+  return t;
+}
+
+// A non-empty array of objects at `parent`.`key`, required.
+const json& key_array(const JsonReader& r, const json& obj, const std::string& parent,
+                      const char* key) {
+  const std::string w = JsonReader::join(parent, key);
+  if (!obj.contains(key)) r.fail_at(w, "is required");
+  r.array(obj[key], w);
+  if (obj[key].empty()) r.fail_at(w, "must not be empty");
+  return obj[key];
+}
+
+CameraPath read_path(const JsonReader& r, const json& j, const std::string& where,
+                     const Scene& s) {
+  const json& p = r.object(j, where);
+  r.keys(p, where, {"name", "description", "keys"});
+  CameraPath path;
+  if (!p.contains("name")) r.fail_at(where + ".name", "is required");
+  path.name = r.string(p["name"], where + ".name");
+  for (char c : path.name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      r.fail_at(where + ".name", "may use only letters, digits, '_', '-' and '.', not " +
+                                     q(path.name));
+  for (const CameraPath& other : s.animation.paths)
+    if (other.name == path.name) r.fail_at(where + ".name", "repeats the path name " + q(path.name));
+  path.description = r.string(p, where, "description", "");
+  const json& keys = key_array(r, p, where, "keys");
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string w = JsonReader::index(where + ".keys", i);
+    const json& k = r.object(keys[i], w);
+    r.keys(k, w, {"time", "position", "target", "fov_y", "cut"});
+    CameraKey key;
+    key.time = read_key_time(r, k, w, i ? path.keys.back().time : -1.0f);
+    key.position = r.required_vec3(k, w, "position");
+    key.target = r.required_vec3(k, w, "target");
+    if (glm::length(key.target - key.position) < 1e-6f)
+      r.fail_at(w + ".target", "must differ from the position");
+    // Without fov_y a key keeps the default camera's.
+    key.fov_y_deg = r.number(k, w, "fov_y", s.cameras.at(0).fov_y_deg, 1.001f, 178.999f);
+    key.cut = r.boolean(k, w, "cut", false);
+    if (key.cut && i == 0) r.fail_at(w + ".cut", "cannot be true on a path's first key");
+    path.keys.push_back(key);
+  }
+  return path;
+}
+
+ObjectMotion read_motion(const JsonReader& r, const json& j, const std::string& where,
+                         const Scene& s, const std::map<std::string, std::vector<int>>& by_name) {
+  const json& o = r.object(j, where);
+  std::vector<std::string> kinds;
+  for (const char* k : {"keys", "spin", "orbit"})
+    if (o.contains(k)) kinds.push_back(k);
+  if (kinds.empty()) r.fail_at(where, "needs one of \"keys\", \"spin\" or \"orbit\"");
+  if (kinds.size() > 1)
+    r.fail_at(where, "has both " + q(kinds[0]) + " and " + q(kinds[1]) +
+                         " (give one of \"keys\", \"spin\" or \"orbit\")");
+  ObjectMotion m;
+  if (kinds[0] == "keys") {
+    r.keys(o, where, {"meshes", "keys", "pivot"}, " for a keyframed motion");
+  } else {
+    r.keys(o, where, {"meshes", kinds[0]}, " for a" + std::string(kinds[0] == "spin" ? "" : "n") +
+                                                   " " + kinds[0] + " motion");
+  }
+
+  // Every mesh of each name moves.
+  const json& names = key_array(r, o, where, "meshes");
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string w = JsonReader::index(where + ".meshes", i);
+    const std::string name = r.string(names[i], w);
+    const auto it = by_name.find(name);
+    if (it == by_name.end()) r.fail_at(w, "names the unknown mesh " + q(name));
+    for (std::size_t k = 0; k < i; ++k)
+      if (names[k] == names[i]) r.fail_at(w, "repeats the mesh name " + q(name));
+    for (int mesh : it->second) {
+      if (s.meshes[static_cast<std::size_t>(mesh)].reflector != 0)
+        r.fail_at(w, "names " + q(name) +
+                         ", a planar reflector, but planar reflectors are fixed rectangles and "
+                         "cannot move");
+      m.meshes.push_back(mesh);
+    }
+  }
+  // The default pivot: the centre of the box around the meshes at rest.
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (int mesh : m.meshes)
+    for (const Vertex& v : s.meshes[static_cast<std::size_t>(mesh)].vertices) {
+      lo = glm::min(lo, v.position);
+      hi = glm::max(hi, v.position);
+    }
+  const glm::vec3 centre = 0.5f * (lo + hi);
+
+  if (kinds[0] == "keys") {
+    m.kind = ObjectMotion::Kind::Keyframes;
+    m.pivot = r.vec3(o, where, "pivot", centre);
+    const json& keys = key_array(r, o, where, "keys");
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const std::string w = JsonReader::index(where + ".keys", i);
+      const json& k = r.object(keys[i], w);
+      r.keys(k, w, {"time", "translate", "rotate_deg", "scale"});
+      TransformKey key;
+      key.time = read_key_time(r, k, w, i ? m.keys.back().time : -1.0f);
+      key.translate = r.vec3(k, w, "translate", key.translate);
+      key.rotate_deg = r.vec3(k, w, "rotate_deg", key.rotate_deg, -36000.0f, 36000.0f);
+      key.scale = read_scale(r, k, w);
+      m.keys.push_back(key);
+    }
+  } else {
+    const bool spin = kinds[0] == "spin";
+    const std::string w = where + "." + kinds[0];
+    const json& t = r.object(o[kinds[0]], w);
+    r.keys(t, w, {"axis", "period", spin ? "pivot" : "center"});
+    m.kind = spin ? ObjectMotion::Kind::Spin : ObjectMotion::Kind::Orbit;
+    if (t.contains("axis")) m.axis = r.direction(t["axis"], w + ".axis");
+    if (!t.contains("period")) r.fail_at(w + ".period", "is required");
+    m.period = r.number(t["period"], w + ".period", -kMaxTime, kMaxTime);
+    if (m.period == 0.0f) r.fail_at(w + ".period", "must not be 0 (seconds per turn)");
+    if (spin)
+      m.pivot = r.vec3(t, w, "pivot", centre);
+    else
+      m.pivot = r.required_vec3(t, w, "center");
+  }
+  return m;
+}
+
+void read_animation(const JsonReader& r, const json& j, Scene& s) {
+  r.object(j, "animation");
+  r.keys(j, "animation", {"duration", "paths", "objects"});
+  Animation& a = s.animation;
+  if (j.contains("paths")) {
+    r.array(j["paths"], "animation.paths");
+    for (std::size_t i = 0; i < j["paths"].size(); ++i)
+      a.paths.push_back(read_path(r, j["paths"][i], JsonReader::index("animation.paths", i), s));
+  }
+  if (j.contains("objects")) {
+    r.array(j["objects"], "animation.objects");
+    std::map<std::string, std::vector<int>> by_name;
+    for (std::size_t i = 0; i < s.meshes.size(); ++i)
+      by_name[s.meshes[i].name].push_back(static_cast<int>(i));
+    for (std::size_t i = 0; i < j["objects"].size(); ++i)
+      a.objects.push_back(
+          read_motion(r, j["objects"][i], JsonReader::index("animation.objects", i), s, by_name));
+  }
+  // Default duration: the last key time of any path or keyframed motion; 4 s of spinning and
+  // orbiting when that is 0.
+  float last = 0.0f;
+  bool turns = false;
+  for (const CameraPath& p : a.paths) last = std::max(last, p.keys.back().time);
+  for (const ObjectMotion& m : a.objects) {
+    if (m.kind == ObjectMotion::Kind::Keyframes) last = std::max(last, m.keys.back().time);
+    turns |= m.kind != ObjectMotion::Kind::Keyframes;
+  }
+  a.duration = r.number(j, "animation", "duration", last == 0.0f && turns ? 4.0f : last, 0.0f,
+                        kMaxTime);
+}
+
 }  // namespace
 
 // ---- public API -----------------------------------------------------------------------------
@@ -567,7 +756,7 @@ Scene load_scene_json(const fs::path& path) {
   const fs::path dir = directory_of(path);
   r.keys(j, "",
          {"name", "description", "ambient", "environment", "materials", "meshes", "primitives",
-          "lights", "cameras"});
+          "lights", "cameras", "animation"});
   Scene s;
   LoadContext ctx;
   s.name = r.string(j, "", "name", path.stem().string());
@@ -590,6 +779,7 @@ Scene load_scene_json(const fs::path& path) {
     read_cameras(r, j["cameras"], s);
   else
     s.cameras.push_back(framing_camera(s));
+  if (j.contains("animation")) read_animation(r, j["animation"], s);
   validate_file(s, path);
   return s;
 }
