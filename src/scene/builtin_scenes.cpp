@@ -23,6 +23,13 @@
 //          hard-depth-range, hard-far-origin, hard-degenerate, hard-roughness, hard-reflectors;
 //          described above their builders and in docs/ROBUSTNESS.md.
 //
+// Animation (scene/animation.h): every scene has named camera paths, chosen with the option
+// path=NAME (e.g. gallery:path=pan, which sets Animation::default_path), and some move objects;
+// assets/scenes/README.md lists them. Together they cover a dolly, an orbit, a fast pan, an
+// object moving over a mirror, an object entering the view and camera cuts. At time 0 every
+// scene is exactly the static scene built here (motions are the identity, paths start at the
+// default camera): single-frame figures and tests are unchanged.
+//
 // Default-camera framing (16:9, fov_y 60, glm::lookAt + glm::perspective, NDC in [-1,1], +y up)
 // is worked out in the comments next to each camera and checked by tests/unit.
 #include "scene/builtin_scenes.h"
@@ -34,6 +41,7 @@
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -42,6 +50,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/errors.h"
+#include "scene/animation.h"
 #include "scene/meshgen.h"
 
 namespace ssr {
@@ -106,6 +115,29 @@ struct Builder {
     c.far_plane = 200.0f;
     s.cameras.push_back(c);
   }
+  // ---- animation ----
+  int mesh_index(const std::string& name) const {
+    for (std::size_t i = 0; i < s.meshes.size(); ++i)
+      if (s.meshes[i].name == name) return static_cast<int>(i);
+    throw std::logic_error("built-in scene '" + s.name + "' has no mesh '" + name + "'");
+  }
+  void path(std::string name, std::string description, std::vector<CameraKey> keys) {
+    s.animation.paths.push_back({std::move(name), std::move(description), std::move(keys)});
+  }
+  // `m` moving the named meshes; keyframes and spins turn about the meshes' bounding-box centre
+  // (orbits keep m.pivot, their centre).
+  void motion(ObjectMotion m, const std::vector<std::string>& names) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const std::string& n : names) {
+      m.meshes.push_back(mesh_index(n));
+      for (const Vertex& v : s.meshes[static_cast<std::size_t>(m.meshes.back())].vertices) {
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+      }
+    }
+    if (m.kind != ObjectMotion::Kind::Orbit) m.pivot = 0.5f * (lo + hi);
+    s.animation.objects.push_back(std::move(m));
+  }
   // A horizontal (+Y facing) planar reflector rectangle; returns its 1-based id.
   int floor_reflector(glm::vec3 center, glm::vec2 half_extents) {
     Reflector r;
@@ -129,6 +161,72 @@ Material mat(std::string name, glm::vec3 albedo, float roughness, float metallic
   m.reflectance = reflectance;
   m.emission = emission;
   return m;
+}
+
+// ---- animation helpers --------------------------------------------------------------------------
+// Every motion is the identity at time 0 and every path starts at (or next to) the default
+// camera, so time 0 is the static scene exactly.
+
+CameraKey key(float time, glm::vec3 position, glm::vec3 target, float fov = 60.0f,
+              bool cut = false) {
+  return CameraKey{time, position, target, fov, cut};
+}
+CameraKey key(float time, const Camera& c, bool cut = false) {
+  return key(time, c.position, c.target, c.fov_y_deg, cut);
+}
+
+glm::vec3 yawed(glm::vec3 v, float deg) { return glm::vec3(rotate_y(deg) * glm::vec4(v, 0.0f)); }
+
+// Keys every `step` seconds over [0, duration]: camera `c` (position and target) turned by
+// angle(t) degrees about the vertical axis through `centre` (+ = counter-clockwise from above).
+template <class Angle>
+std::vector<CameraKey> orbit_keys(const Camera& c, glm::vec3 centre, float duration, float step,
+                                  Angle angle) {
+  std::vector<CameraKey> keys;
+  const int n = static_cast<int>(std::lround(duration / step));
+  for (int i = 0; i <= n; ++i) {
+    const float t = static_cast<float>(i) * step, a = angle(t);
+    keys.push_back(a == 0.0f ? key(t, c)
+                             : key(t, centre + yawed(c.position - centre, a),
+                                   centre + yawed(c.target - centre, a), c.fov_y_deg));
+  }
+  return keys;
+}
+
+// A pan: camera `c` stays put and turns by the given (time, degrees) pairs (+ = to the left).
+std::vector<CameraKey> pan_keys(const Camera& c, std::initializer_list<std::pair<float, float>> turns) {
+  std::vector<CameraKey> keys;
+  for (const auto& [t, deg] : turns)
+    keys.push_back(deg == 0.0f ? key(t, c)
+                               : key(t, c.position, c.position + yawed(c.target - c.position, deg),
+                                     c.fov_y_deg));
+  return keys;
+}
+
+ObjectMotion keyframes(std::vector<TransformKey> keys) {
+  ObjectMotion m;
+  m.kind = ObjectMotion::Kind::Keyframes;
+  m.keys = std::move(keys);
+  return m;
+}
+ObjectMotion spin(glm::vec3 axis, float period) {
+  ObjectMotion m;
+  m.kind = ObjectMotion::Kind::Spin;
+  m.axis = glm::normalize(axis);
+  m.period = period;
+  return m;
+}
+ObjectMotion orbit(glm::vec3 centre, glm::vec3 axis, float period) {
+  ObjectMotion m;
+  m.kind = ObjectMotion::Kind::Orbit;
+  m.pivot = centre;
+  m.axis = glm::normalize(axis);
+  m.period = period;
+  return m;
+}
+// A translation-only key.
+TransformKey slide(float time, glm::vec3 translate = glm::vec3(0.0f)) {
+  return TransformKey{time, translate, glm::vec3(0.0f), glm::vec3(1.0f)};
 }
 
 std::uint32_t hash32(std::uint32_t x) {
@@ -439,6 +537,42 @@ Scene gallery(const Options& opt) {
   b.camera("high", {0.0f, 7.5f, 9.0f}, {0.0f, 0.0f, -0.5f});    // steep look down
   b.camera("side", {9.0f, 2.2f, 5.0f}, {0.0f, 0.8f, -1.0f});    // oblique, from the right
 
+  // Motions: sphere_green slides 4.4 m left over the mirror floor and back (2.2 m/s; it passes
+  // 1.5 m behind the marker and 2.2 m in front of the gold sphere); the teal pedestal with its
+  // white sphere (at the default view's left edge) moves 5 m left, out of view, and comes back.
+  b.motion(keyframes({slide(0), slide(2, {-4.4f, 0, 0}), slide(4)}), {"sphere_green"});
+  b.motion(keyframes({slide(0), slide(1.5f, {-5, 0, 0}), slide(2.5f, {-5, 0, 0}), slide(4)}),
+           {"pedestal_teal", "sphere_white"});
+  const Camera& cam = b.s.cameras[0];
+  const glm::vec3 to_target = cam.target - cam.position;
+  b.path("dolly", "camera dolly: 3.5 m in along the default view, halfway to its target (4 s)",
+         {key(0, cam), key(2, cam.position + 0.25f * to_target, cam.target),
+          key(4, cam.position + 0.5f * to_target, cam.target)});
+  b.path("orbit",
+         "camera orbit: swings 50 deg to either side of the default view about the vertical axis "
+         "through the floor's centre (6 s)",
+         orbit_keys(cam, glm::vec3(0.0f), 6.0f, 0.25f,
+                    [](float t) { return 50.0f * std::sin(std::numbers::pi_v<float> * t / 3.0f); }));
+  b.path("pan",
+         "fast pan: from the default position turns 40 deg left, 80 deg right and back in 2 s (up "
+         "to ~110 deg/s): disocclusion at the screen edges",
+         pan_keys(cam, {{0.0f, 0.0f}, {0.5f, 40.0f}, {1.25f, -40.0f}, {2.0f, 0.0f}}));
+  b.path("slide",
+         "object over the mirror: the default camera holds while sphere_green slides across the "
+         "mirror floor and back and the teal pedestal leaves the view on the left and returns (4 s)",
+         {key(0, cam), key(4, cam)});
+  b.path("enter",
+         "object entering the screen: the default camera zoomed in (fov 28): sphere_green enters "
+         "from the right edge at ~0.2 s, crosses the frame and leaves again at ~3.8 s (4 s)",
+         {key(0, cam.position, cam.target, 28.0f), key(4, cam.position, cam.target, 28.0f)});
+  const Camera& side = b.s.cameras[3];
+  b.path("cut",
+         "camera cut: the default view for 2 s, then a cut to the side camera, which moves 1.6 m "
+         "closer (4 s)",
+         {key(0, cam), key(2, side, /*cut=*/true),
+          key(4, side.position + 0.15f * (side.target - side.position), side.target)});
+  b.s.animation.duration = 6.0f;
+
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.3f;
   return b.s;
@@ -485,6 +619,14 @@ Scene cornell() {
   b.camera("inside", {0.0f, 2.6f, 2.2f}, {0.0f, 1.3f, -2.5f});
   b.camera("low", {0.0f, 0.45f, 5.5f}, {0.0f, 0.9f, -2.5f});
   b.camera("corner", {2.1f, 4.2f, 2.1f}, {-0.8f, 0.6f, -1.2f});
+
+  // The short box spins on the glossy floor (one turn in 4 s; its corners stay 0.6 m from the
+  // walls and the tall box).
+  b.motion(spin({0, 1, 0}, 4.0f), {"short_box"});
+  b.path("dolly",
+         "camera dolly: from the default view through the open front into the box (4 s)",
+         {key(0, b.s.cameras[0]), key(4, {0.0f, 2.3f, 2.3f}, {0.0f, 1.8f, -2.5f})});
+  b.s.animation.duration = 4.0f;
 
   b.s.environment.type = Environment::Type::Constant;
   b.s.environment.constant = glm::vec3(0.06f, 0.06f, 0.07f);
@@ -576,6 +718,16 @@ Scene corridor() {
   b.camera("side", {1.3f, 2.6f, -3.0f}, {-1.6f, 0.6f, -12.0f});  // oblique, toward the left wall
   b.camera("back", {0.0f, 1.7f, -39.0f}, {0.0f, 1.1f, -20.0f});  // from the far end
 
+  const Camera& cam = b.s.cameras[0];
+  const glm::vec3 walk(0.0f, 0.0f, -12.0f);
+  b.path("dolly", "camera dolly: walks 12 m down the corridor at 2 m/s (6 s)",
+         {key(0, cam), key(6, cam.position + walk, cam.target + walk)});
+  b.path("pan",
+         "fast pan: from the default position turns 50 deg left, 100 deg right and back in 2 s: "
+         "walls, pillars and panels sweep in at the screen edges",
+         pan_keys(cam, {{0.0f, 0.0f}, {0.5f, 50.0f}, {1.25f, -50.0f}, {2.0f, 0.0f}}));
+  b.s.animation.duration = 6.0f;
+
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.25f;
   return b.s;
@@ -614,6 +766,14 @@ Scene glass() {
   b.light({-4.0f, 2.5f, 1.0f}, {0.6f, 0.7f, 1.0f}, 10.0f, 12.0f);
   b.camera("default", {0.0f, 1.5f, 5.5f}, {0.0f, 1.0f, 0.0f});
   b.camera("close", {-1.0f, 1.2f, 2.8f}, {-1.2f, 0.9f, 0.0f});
+  // The slab turns about its vertical axis (one turn in 6 s; 0.8 m clear of the sphere).
+  b.motion(spin({0, 1, 0}, 6.0f), {"glass_slab"});
+  b.path("orbit",
+         "camera orbit: swings 35 deg to either side of the default view about the vertical axis "
+         "through its target (4 s)",
+         orbit_keys(b.s.cameras[0], b.s.cameras[0].target, 4.0f, 0.25f,
+                    [](float t) { return 35.0f * std::sin(std::numbers::pi_v<float> * t / 2.0f); }));
+  b.s.animation.duration = 4.0f;
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.35f;
   return b.s;
@@ -677,6 +837,11 @@ Scene hard_grazing() {
   b.camera("skim", {0.0f, 0.01f, 2.0f}, {0.0f, 0.02f, -10.0f});   // 1 cm, looking a hair up
   b.camera("shallow", {0.0f, 0.3f, 3.0f}, {0.0f, 0.0f, -30.0f});  // ~0.6 deg down
   set_planes(b.s, 0.01f, 500.0f);
+  const glm::vec3 ahead(0.0f, 0.0f, -2.0f);
+  b.path("dolly", "camera dolly: 2 m forward, still 5 cm above the mirror (4 s)",
+         {key(0, b.s.cameras[0]),
+          key(4, b.s.cameras[0].position + ahead, b.s.cameras[0].target + ahead)});
+  b.s.animation.duration = 4.0f;
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.3f;
   return b.s;
@@ -710,6 +875,14 @@ Scene hard_mirror_box() {
   b.camera("toward", {0.0f, 1.5f, 1.5f}, {0.0f, 1.5f, -2.0f});
   b.camera("corner", {1.2f, 2.4f, 1.2f}, {-2.0f, 0.5f, -2.0f});
   set_planes(b.s, 0.05f, 50.0f);
+  // The green sphere circles a point beside it (radius 0.54 m, 4 s a turn), clear of the cube
+  // and the walls; the camera turns a full circle in place.
+  b.motion(orbit({0.5f, 0.8f, -0.4f}, {0, 1, 0}, 4.0f), {"sphere_green"});
+  b.path("turn",
+         "camera pan: turns a full circle in place (90 deg/s) while the green sphere circles (4 s)",
+         orbit_keys(b.s.cameras[0], b.s.cameras[0].position, 4.0f, 0.25f,
+                    [](float t) { return 90.0f * t; }));
+  b.s.animation.duration = 4.0f;
   b.s.environment.type = Environment::Type::Constant;
   b.s.environment.constant = glm::vec3(0.05f);
   b.s.ambient = 1.0f;
@@ -738,6 +911,13 @@ Scene hard_thin() {
   b.light({-3.0f, 2.0f, -4.0f}, {0.6f, 0.7f, 1.0f}, 20.0f, 15.0f);
   b.camera("default", {0.0f, 1.2f, 5.0f}, {0.0f, 0.8f, 0.0f});
   b.camera("close", {0.0f, 0.4f, 1.0f}, {-0.3f, 0.6f, -1.5f});
+  const Camera& cam = b.s.cameras[0];
+  const glm::vec3 right(1.5f, 0.0f, 0.0f);
+  b.path("truck",
+         "camera truck: slides 1.5 m right and back keeping its direction: the pole and the fins "
+         "move across their reflections (4 s)",
+         {key(0, cam), key(2, cam.position + right, cam.target + right), key(4, cam)});
+  b.s.animation.duration = 4.0f;
   return b.s;
 }
 
@@ -768,6 +948,11 @@ Scene hard_depth_range() {
   b.camera("default", eye, eye + glm::vec3(0.0f, -0.15f, -1.0f));
   b.camera("far", {0.0f, 50.0f, 0.0f}, {0.0f, 0.0f, -2.0e4f});
   set_planes(b.s, 0.001f, 1.0e5f);
+  const glm::vec3 back(0.0f, 0.0f, 1.0f);
+  b.path("dolly", "camera dolly out: backs 1 m away, the 1 cm ball receding to 1 m (4 s)",
+         {key(0, b.s.cameras[0]),
+          key(4, b.s.cameras[0].position + back, b.s.cameras[0].target + back)});
+  b.s.animation.duration = 4.0f;
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.4f;
   return b.s;
@@ -787,6 +972,12 @@ Scene hard_far_origin() {
     c.target += o;
   }
   for (Reflector& r : s.reflectors) r.center += o;
+  for (CameraPath& p : s.animation.paths)
+    for (CameraKey& k : p.keys) {
+      k.position += o;
+      k.target += o;
+    }
+  for (ObjectMotion& m : s.animation.objects) m.pivot += o;
   return s;
 }
 
@@ -841,6 +1032,10 @@ Scene hard_degenerate() {
   // far edge are sky. up: looking 35 deg up, almost nothing but sky.
   b.camera("default", {0.3f, 1.5f, 4.0f}, {0.3f, 1.5f, -4.0f});
   b.camera("up", {0.0f, 1.0f, 4.0f}, {0.0f, 6.6f, -4.0f});
+  b.path("pan",
+         "fast pan: turns 40 deg left, 80 deg right and back in 2 s over the degenerate quads",
+         pan_keys(b.s.cameras[0], {{0.0f, 0.0f}, {0.5f, 40.0f}, {1.25f, -40.0f}, {2.0f, 0.0f}}));
+  b.s.animation.duration = 2.0f;
   b.s.environment.type = Environment::Type::Sky;
   b.s.ambient = 0.3f;
   return b.s;
@@ -867,6 +1062,12 @@ Scene hard_roughness() {
   // The split line x = 0 runs up the frame just right of the centre.
   b.camera("default", {-0.25f, 1.6f, 6.0f}, {-0.25f, 0.6f, 0.0f});
   b.camera("low", {-0.25f, 0.4f, 6.0f}, {-0.25f, 0.5f, 0.0f});
+  b.path("orbit",
+         "camera orbit: swings 30 deg to either side about the vertical axis through the default "
+         "target, the roughness split sweeping across the frame (4 s)",
+         orbit_keys(b.s.cameras[0], b.s.cameras[0].target, 4.0f, 0.25f,
+                    [](float t) { return 30.0f * std::sin(std::numbers::pi_v<float> * t / 2.0f); }));
+  b.s.animation.duration = 4.0f;
   return b.s;
 }
 
@@ -894,6 +1095,15 @@ Scene hard_reflectors() {
   b.camera("default", eye, {0.0f, 1.5f, 0.0f});                 // level: both edge-on mirrors
   b.camera("turned", {0.0f, 1.5f, 2.0f}, {0.0f, 1.3f, 8.0f});   // facing the mirror behind
   b.camera("high", {0.0f, 4.0f, 7.0f}, {0.0f, 0.0f, -3.0f});
+  // Rises 0.4 m out of the edge-on plane, then two cuts: to "turned" at 2 s, to "high" at 4 s.
+  const std::vector<Camera>& c = b.s.cameras;
+  b.path("cut",
+         "camera cuts: rises 0.4 m from the edge-on view, cuts to the mirror behind at 2 s and "
+         "to the high view at 4 s, then descends 1 m (6 s)",
+         {key(0, c[0]), key(1.8f, c[0].position + glm::vec3(0, 0.4f, 0), c[0].target),
+          key(2, c[1], /*cut=*/true), key(4, c[2], /*cut=*/true),
+          key(6, c[2].position - glm::vec3(0, 1.0f, 0), c[2].target)});
+  b.s.animation.duration = 6.0f;
   return b.s;
 }
 
@@ -903,6 +1113,10 @@ struct Entry {
   Scene (*make)(const Options&);
 };
 
+// "path=NAME": the scene's camera path names (as its maker adds them; a unit test compares),
+// none by default.
+OptionSpec path_option(std::vector<std::string> names) { return {"path", 0, 0, std::move(names), ""}; }
+
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> list = {
       {{"gallery",
@@ -910,51 +1124,52 @@ const std::vector<Entry>& entries() {
         "a red marker sphere; options gallery:reflectors=1..16 (floor tiles plus wall mirrors), "
         "normal_map=ripples|tiles|none (e.g. gallery:reflectors=5,normal_map=tiles)"},
        {{"reflectors", 1, Scene::kMaxReflectors, {}, "1"},
-        {"normal_map", 0, 0, {"ripples", "tiles", "none"}, "none"}},
+        {"normal_map", 0, 0, {"ripples", "tiles", "none"}, "none"},
+        path_option({"dolly", "orbit", "pan", "slide", "enter", "cut"})},
        &gallery},
       {{"cornell",
         "5 m Cornell box, open at the front, with a glossy metal floor (roughness 0.3) and two "
         "boxes"},
-       {},
+       {path_option({"dolly"})},
        [](const Options&) { return cornell(); }},
       {{"corridor",
         "40 m corridor with a near-mirror floor (planar reflector, roughness 0.05), pillars and "
         "coloured panels"},
-       {},
+       {path_option({"dolly", "pan"})},
        [](const Options&) { return corridor(); }},
       {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
-       {},
+       {path_option({"orbit"})},
        [](const Options&) { return glass(); }},
       // Hard cases (issue 7): see the comments above each builder and docs/ROBUSTNESS.md.
       {{"hard-grazing", "hard case: camera 5 cm above a 400 m mirror floor, looking along it"},
-       {},
+       {path_option({"dolly"})},
        [](const Options&) { return hard_grazing(); }},
       {{"hard-mirror-box",
         "hard case: camera inside a closed box of six mirrors (rays back at the camera, through "
         "the near plane)"},
-       {},
+       {path_option({"turn"})},
        [](const Options&) { return hard_mirror_box(); }},
       {{"hard-thin", "hard case: a 2 cm pole and 1 cm fins standing on a mirror floor"},
-       {},
+       {path_option({"truck"})},
        [](const Options&) { return hard_thin(); }},
       {{"hard-depth-range",
         "hard case: near 0.001, far 1e5, objects from 0.01 to 5e4 m on a mirror floor"},
-       {},
+       {path_option({"dolly"})},
        [](const Options&) { return hard_depth_range(); }},
       {{"hard-far-origin", "hard case: the gallery moved 1e4 m from the origin (camera too)"},
-       {},
+       {path_option({"dolly", "orbit", "pan", "slide", "enter", "cut"})},
        [](const Options&) { return hard_far_origin(); }},
       {{"hard-degenerate",
         "hard case: normals in the face, flipped and cancelling, a zero-area triangle, an "
         "edge-on sliver, much sky"},
-       {},
+       {path_option({"pan"})},
        [](const Options&) { return hard_degenerate(); }},
       {{"hard-roughness", "hard case: a metal floor split into roughness exactly 0 and exactly 1"},
-       {},
+       {path_option({"orbit"})},
        [](const Options&) { return hard_roughness(); }},
       {{"hard-reflectors",
         "hard case: planar mirrors seen edge-on by the default camera, one grazing, one behind it"},
-       {},
+       {path_option({"cut"})},
        [](const Options&) { return hard_reflectors(); }},
   };
   return list;
@@ -1036,7 +1251,13 @@ Options parse_options(const Entry& e, const std::string& full, std::string_view 
 const std::vector<BuiltinSceneInfo>& builtin_scenes() {
   static const std::vector<BuiltinSceneInfo> infos = [] {
     std::vector<BuiltinSceneInfo> v;
-    for (const Entry& e : entries()) v.push_back(e.info);
+    for (const Entry& e : entries()) {
+      v.push_back(e.info);
+      // The camera paths, from the path option (the same names the scene has).
+      for (const OptionSpec& o : e.options)
+        if (o.key == "path")
+          v.back().description += "; camera paths (" + e.info.name + ":path=NAME): " + o.allowed();
+    }
     return v;
   }();
   return infos;
@@ -1052,6 +1273,8 @@ Scene make_builtin_scene(const std::string& name) {
                               : parse_options(e, name, std::string_view(name).substr(colon + 1));
       Scene s = e.make(opt);
       s.name = name;  // options included: results and file names record what was asked for
+      if (const auto p = opt.find("path"); p != opt.end() && !p->second.empty())
+        s.animation.default_path = static_cast<int>(&find_path(s, p->second) - s.animation.paths.data());
       validate(s);
       return s;
     }

@@ -532,8 +532,11 @@ TEST(BuiltinSceneOptions, BadOptionsThrowInputErrorNamingTheKeyAndAllowedValues)
       {"gallery:normal_map=waves", {"normal_map", "ripples|tiles|none", "'waves'"}},
       {"gallery:normal_map=Ripples", {"normal_map", "ripples|tiles|none"}},
       {"gallery:foo=1", {"'foo'", "reflectors=1..16", "normal_map=ripples|tiles|none"}},
-      {"cornell:reflectors=2", {"'cornell'", "no options", "reflectors", "gallery"}},
-      {"corridor:normal_map=tiles", {"'corridor'", "no options", "normal_map"}},
+      // Every scene takes path=NAME (its camera paths); other keys are the gallery's.
+      {"cornell:reflectors=2", {"'cornell'", "no option 'reflectors'", "path=dolly"}},
+      {"corridor:normal_map=tiles", {"'corridor'", "no option 'normal_map'", "path=dolly|pan"}},
+      {"corridor:path=nope", {"'path'", "'corridor'", "dolly|pan", "'nope'"}},
+      {"gallery:path=", {"'path'", "dolly|orbit|pan|slide|enter|cut"}},
       {"gallery:", {"gallery", "reflectors=1..16", "normal_map"}},
       {"gallery:reflectors", {"'reflectors'", "1..16", "no value"}},
       {"gallery:reflectors=2,", {"empty", "reflectors=1..16"}},
