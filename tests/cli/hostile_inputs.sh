@@ -138,6 +138,13 @@ cam c_fov_str ', "fov_y": "NaN"';                       render_bad "cameras[0].f
 refl r_center '"center": [0, Infinity, 0], "tangent": [1, 0, 0], "bitangent": [0, 0, 1], "half_extents": [1, 1]'
 render_bad r_center.json "$in/r_center.json"
 scene env '"environment": {"type": "constant", "color": [1, 1, 1], "intensity": 1e39}'; render_bad intensity "$in/env.json"
+# Animation: a huge key time, a moving planar reflector (they are fixed rectangles), a path
+# option naming no path.
+scene a_time '"animation": {"paths": [{"name": "p", "keys": [{"time": 1e39, "position": [0, 1, 4], "target": [0, 0, 0]}]}]}'
+render_bad "animation.paths[0].keys[0].time" "$in/a_time.json"
+json a_refl '{"primitives": [{"type": "plane", "name": "floor", "size": [4, 4], "reflector": true}], "animation": {"objects": [{"meshes": ["floor"], "spin": {"period": 1}}]}}'
+render_bad "planar reflector" "$in/a_refl.json"
+render_bad "'nope'" "gallery:path=nope"
 
 # ---- missing, unreadable and non-regular files -------------------------------------------------
 render_bad nothere.obj "$in/nothere.obj"
