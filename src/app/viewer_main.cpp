@@ -7,6 +7,7 @@
 //   mask (CPU ray tracing) run on demand, with a progress bar.
 //   --frames N --screenshot F.png, or --script FILE (viewer_script.h): scripted runs for tests.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -244,6 +245,10 @@ class Viewer {
   std::string psnr_key_;
   double psnr_ = 0;
   bool psnr_valid_ = false;
+  // Live truth: an on-demand side (the reference) runs on every frame it is stale, and each new
+  // A-vs-B figure is kept for the per-frame plot.
+  bool live_truth_ = false;
+  std::deque<float> psnr_history_;
   glm::dvec2 last_mouse_{0};
   std::map<int, bool> key_was_down_;
   std::deque<float> frame_ms_;
@@ -292,6 +297,7 @@ void Viewer::load_scene_spec(const std::string& spec, const std::string& camera_
   }
   mask_key_.clear();
   psnr_valid_ = false;
+  psnr_history_.clear();
 }
 
 void Viewer::set_technique(Side& side, const std::string& name) {
@@ -630,6 +636,9 @@ void Viewer::technique_panel(Side& side, const char* label) {
     else if (side.shown_key != frame_key() + "|" + technique_key(*side.technique))
       ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "stale: the view changed");
     else ImGui::TextDisabled("up to date");
+    ImGui::Checkbox("every frame (live truth)", &live_truth_);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("run it on every changed frame (playback: the A-vs-B figure per frame is plotted); slow");
   }
   if (ImGui::TreeNodeEx("parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
     ParamSet params = side.technique->params();
@@ -806,6 +815,11 @@ void Viewer::draw_ui(double dt) {
       else if (!psnr_valid_) ImGui::TextDisabled("PSNR A vs B: - (no reflective pixels)");
       else if (psnr_ >= kPsnrCap) ImGui::Text("PSNR A vs B: identical");
       else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
+      if (psnr_history_.size() > 1) {
+        const std::vector<float> h(psnr_history_.begin(), psnr_history_.end());
+        ImGui::PlotLines("##psnr history", h.data(), static_cast<int>(h.size()), 0, "PSNR A vs B per frame", FLT_MAX,
+                         FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 60.0f));
+      }
       ImGui::TextDisabled("final image, reflective pixels, display values:");
       ImGui::TextDisabled("compare's 'PSNR' when B is the reference");
     }
@@ -909,7 +923,8 @@ void Viewer::render() {
     }
     const std::string key = fkey + "|" + technique_key(*s.technique);
     // On-demand techniques run when asked (and in scripted runs, whenever their image is stale).
-    const bool run_it = !on_demand(*s.technique) || s.request == 1 || (scripted_ && s.shown_key != key);
+    const bool run_it = !on_demand(*s.technique) || s.request == 1 ||
+                        ((scripted_ || live_truth_) && s.shown_key != key);
     if (!run_it) continue;
     s.request = 0;
     s.timer->begin_frame();
@@ -967,6 +982,10 @@ void Viewer::render() {
       psnr_valid_ = p.has_value();
       psnr_ = p.value_or(0.0);
       psnr_key_ = key;
+      if (p && std::isfinite(*p)) {
+        psnr_history_.push_back(static_cast<float>(std::min(*p, kPsnrCap)));
+        while (psnr_history_.size() > 300) psnr_history_.pop_front();
+      }
     }
   } else if (compare_ != CompareOff) {
     psnr_valid_ = false;
