@@ -26,7 +26,10 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
   }
 
   TechniqueDecl declare() const override {
-    return {.reads = kReadGBuffer | kReadReflectors, .planar_only = true};
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadReflectors;
+    d.planar_only = true;
+    return d;
   }
 
   void run(const FrameContext& in) override {

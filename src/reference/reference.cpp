@@ -50,7 +50,10 @@ class ReferenceTechnique final : public TechniqueWithParams<P> {
   // Its truth goes to the reflection and (glass pixels) refraction targets; the ideal and the
   // classes are outputs of its own (reference_outputs).
   TechniqueDecl declare() const override {
-    return {.reads = kReadGBuffer | kReadLit | kReadGlass, .writes_refraction = true};
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadLit | kReadGlass;
+    d.writes_refraction = true;
+    return d;
   }
   void run(const FrameContext& in) override;
 

@@ -13,7 +13,11 @@ class NoneTechnique final : public TechniqueWithParams<NoParams> {
   void load(const gl::ShaderSource& src) override {
     program_ = gl::Program::compute(src, "techniques/none.comp");
   }
-  TechniqueDecl declare() const override { return {.reads = kReadGBuffer}; }
+  TechniqueDecl declare() const override {
+    TechniqueDecl d;
+    d.reads = kReadGBuffer;
+    return d;
+  }
   void run(const FrameContext& in) override {
     gl::ScopedPass pass(in.timer, "none");
     glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
