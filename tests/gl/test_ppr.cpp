@@ -188,3 +188,76 @@ TEST(Ppr, FallbackTracerOnRipples) {
     EXPECT_TRUE(s.breakdown.find("other")->handled) << f;
   }
 }
+
+// The crops where a new user saw ppr's artifacts (issue 12): the floor's reflections of the red
+// marker sphere and of the teal cylinder (magnified near reflections: stripes and stipple), and
+// the band where the floor meets the back wall (the dark junction line). Each crop is the
+// projection of the object's mirror image (or of the junction, +-3 rows), on traceable floor
+// pixels; ppr's final image against the screen-space ideal, next to hiz's.
+TEST(Ppr, ArtifactCropsAgainstTheIdeal) {
+  const int w = 640, h = 360;
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, w, h);
+  auto reference = create_technique("reference");
+  apply_assignments(*reference, {"reference.samples=16"});
+  reference->load(r.shaders());
+  const Camera& cam = scene.cameras.front();
+  ScoredFrame frame(r, cam, *reference);
+  const CameraMatrices m = camera_matrices(cam, w, h);
+  auto floor_traceable = [&](std::size_t i) {
+    return frame.labels().reflector[i] == 1 && frame.classes()[i] == PixelClass::Traceable;
+  };
+  // The pixel box of a set of world points mirrored in the floor (y = 0), grown by `pad`.
+  auto mirrored_box = [&](const std::vector<glm::vec3>& pts, int pad) {
+    glm::vec2 lo(1e9f), hi(-1e9f);
+    for (glm::vec3 p : pts) {
+      glm::vec2 px;
+      float d;
+      if (project_to_pixel(m, w, h, {p.x, -p.y, p.z}, px, d)) {
+        lo = glm::min(lo, px);
+        hi = glm::max(hi, px);
+      }
+    }
+    std::vector<bool> mask(static_cast<std::size_t>(w) * h, false);
+    for (int y = std::max(0, int(lo.y) - pad); y <= std::min(h - 1, int(hi.y) + pad); ++y)
+      for (int x = std::max(0, int(lo.x) - pad); x <= std::min(w - 1, int(hi.x) + pad); ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        mask[i] = floor_traceable(i);
+      }
+    return mask;
+  };
+  auto mesh_points = [&](const char* name) {
+    std::vector<glm::vec3> pts;
+    for (const Mesh& mesh : scene.meshes)
+      if (mesh.name == name)
+        for (const Vertex& v : mesh.vertices) pts.push_back(v.position);
+    return pts;
+  };
+  std::vector<glm::vec3> junction;
+  for (float x = -6.0f; x <= 6.0f; x += 0.25f) junction.push_back({x, 0.0f, -7.0f});
+  struct Crop {
+    const char* name;
+    std::vector<bool> mask;
+    double min_psnr;
+  };
+  // Minimums: ppr's measured figure less 0.5 dB (llvmpipe, reference 16 samples a rough pixel).
+  // Measured: marker 26.22 dB (hiz 27.54), cylinder 29.33 (hiz 31.43), junction 43.66 (hiz
+  // 80.99): ppr is still below hiz on the magnified near reflections (issue 12 stays open).
+  Crop crops[] = {{"marker sphere", mirrored_box(mesh_points("marker"), 2), 25.7},
+                  {"teal cylinder", mirrored_box(mesh_points("pedestal_teal"), 2), 28.8},
+                  {"wall junction", mirrored_box(junction, 3), 43.1}};
+  auto ppr = create_technique("ppr"), hiz = create_technique("hiz");
+  ppr->load(r.shaders());
+  hiz->load(r.shaders());
+  const RgbaImageF ppr_img = frame.score(*ppr).display, hiz_img = frame.score(*hiz).display;
+  for (const Crop& c : crops) {
+    std::size_t n = 0;
+    for (bool b : c.mask) n += b;
+    ASSERT_GT(n, 50u) << c.name;
+    const std::optional<double> p = psnr_where(ppr_img, frame.ideal(), c.mask);
+    const std::optional<double> q = psnr_where(hiz_img, frame.ideal(), c.mask);
+    ASSERT_TRUE(p && q);
+    std::printf("%s (%zu px): ppr %.2f dB, hiz %.2f dB vs the ideal\n", c.name, n, *p, *q);
+    EXPECT_GE(*p, c.min_psnr) << c.name;
+  }
+}
