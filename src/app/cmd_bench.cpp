@@ -170,13 +170,7 @@ int run_bench(const BenchOptions& o) {
                        std::to_string(kMaxListed) + " supported.");
   std::vector<Scene> scenes;
   for (const std::string& s : scene_names) scenes.push_back(load_scene(s));
-  std::vector<std::string> names;
-  if (o.techniques.empty()) {
-    for (const TechniqueInfo& t : technique_registry())
-      if (t.name != "reference" && t.name != "planar") names.push_back(t.name);
-  } else {
-    names = split_list(o.techniques, "technique");
-  }
+  const std::vector<std::string> names = technique_names(o.techniques, {"planar"});
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
   auto reference = create_technique("reference");
   apply_assignments(*reference, sets_for("reference", o.sets));

@@ -58,13 +58,7 @@ int run_compare(const CompareOptions& o) {
   if (breakdown && !has_reflective_surfaces(scene, FrameSettings{}.reflective_f0))
     throw InputError("--breakdown needs reflective pixels, and scene '" + scene.name + "' has no reflective surface.");
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
-  std::vector<std::string> names;
-  if (o.techniques.empty()) {
-    for (const TechniqueInfo& t : technique_registry())
-      if (t.name != "reference") names.push_back(t.name);
-  } else {
-    names = split_list(o.techniques, "technique");
-  }
+  const std::vector<std::string> names = technique_names(o.techniques);
   const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
   auto reference = create_technique("reference");
   apply_assignments(*reference, sets_for("reference", o.sets));

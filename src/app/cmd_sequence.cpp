@@ -83,13 +83,7 @@ int run_sequence_command(const SequenceOptions& o) {
   Scene scene = load_scene(o.scene);
   SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps};
   sequence_path(scene, o.path);  // an unknown path is an error before any work
-  std::vector<std::string> names;
-  if (o.techniques.empty()) {
-    for (const TechniqueInfo& t : technique_registry())
-      if (t.name != "reference") names.push_back(t.name);
-  } else {
-    names = split_list(o.techniques, "technique");
-  }
+  const std::vector<std::string> names = technique_names(o.techniques);
   const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
   std::vector<std::string> labels;
   for (const Variant& v : variants) labels.push_back(v.label());

@@ -114,4 +114,13 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   return out;
 }
 
+std::vector<std::string> technique_names(const std::string& list, const std::vector<std::string>& also_left_out) {
+  if (!list.empty()) return split_list(list, "technique");
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : technique_registry())
+    if (t.name != "reference" && std::find(also_left_out.begin(), also_left_out.end(), t.name) == also_left_out.end())
+      names.push_back(t.name);
+  return names;
+}
+
 }  // namespace ssr
