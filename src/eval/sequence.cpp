@@ -62,6 +62,7 @@ struct TechniqueRun {
   std::unique_ptr<Technique> technique;
   RgbaImageF reflected_before;  // its reflected radiance on the previous truth frame
   std::vector<float> excess;    // every pair's pixels
+  std::vector<std::pair<std::string, std::vector<float>>> region_excess;  // the same by region
   GhostSums ghost;
 };
 
@@ -138,13 +139,20 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           }
         }
         if (pair) {
-          const std::vector<float> ex = excess_change(previous, now, before, s.reflected, run.reflected_before,
-                                                      scored->truth_reflected(), truth_reflected_before);
-          if (!ex.empty()) {
-            double sum = 0;
-            for (float e : ex) sum += e;
-            r.instability = sum / static_cast<double>(ex.size());
-            run.excess.insert(run.excess.end(), ex.begin(), ex.end());
+          const std::vector<float> map = excess_change_map(previous, now, before, s.reflected, run.reflected_before,
+                                                           scored->truth_reflected(), truth_reflected_before);
+          double sum = 0;
+          std::size_t n = 0;
+          for (float e : map)
+            if (e >= 0.0f) sum += e, ++n, run.excess.push_back(e);
+          if (n) r.instability = sum / static_cast<double>(n);
+          for (const Region& region : frame_regions(scored->labels())) {
+            const std::string name = region.name();
+            auto it = std::find_if(run.region_excess.begin(), run.region_excess.end(),
+                                   [&](const auto& kv) { return kv.first == name; });
+            if (it == run.region_excess.end()) it = run.region_excess.insert(run.region_excess.end(), {name, {}});
+            for (std::size_t p = 0; p < map.size(); ++p)
+              if (map[p] >= 0.0f && region.contains(scored->labels(), p)) it->second.push_back(map[p]);
           }
         }
         run.reflected_before = std::move(s.reflected);
@@ -174,13 +182,25 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     SequenceSummary s;
     s.technique = variants[v].technique;
     s.label = variants[v].label();
-    if (!run.excess.empty()) {
+    const auto stats = [](std::vector<float>& v, SequenceSummary::RegionInstability& out) {
+      out.pixels = v.size();
+      if (v.empty()) return;
       double sum = 0;
-      for (float e : run.excess) sum += e;
-      s.instability_mean = sum / static_cast<double>(run.excess.size());
-      std::sort(run.excess.begin(), run.excess.end());
-      s.instability_p95 = run.excess[std::min(run.excess.size() - 1, run.excess.size() * 95 / 100)];
-      s.instability_pixels = run.excess.size();
+      for (float e : v) sum += e;
+      out.mean = sum / static_cast<double>(v.size());
+      std::sort(v.begin(), v.end());
+      out.p95 = v[std::min(v.size() - 1, v.size() * 95 / 100)];
+    };
+    SequenceSummary::RegionInstability pooled;
+    stats(run.excess, pooled);
+    s.instability_mean = pooled.mean;
+    s.instability_p95 = pooled.p95;
+    s.instability_pixels = pooled.pixels;
+    for (auto& [name, values] : run.region_excess) {
+      SequenceSummary::RegionInstability ri;
+      ri.region = name;
+      stats(values, ri);
+      s.instability_regions.push_back(ri);
     }
     s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
     s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
@@ -218,9 +238,12 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
   for (const SequenceSummary& s : r.summary) {
     nlohmann::json convergence = nlohmann::json::array();
     for (const auto& p : s.convergence) convergence.push_back(opt(p));
+    nlohmann::json regions = nlohmann::json::object();
+    for (const auto& ri : s.instability_regions)
+      regions[ri.region] = {{"mean", opt(ri.mean)}, {"p95", opt(ri.p95)}, {"pixels", ri.pixels}};
     summary.push_back({{"technique", s.technique},
                        {"label", s.label},
-                       {"instability", {{"mean", opt(s.instability_mean)}, {"p95", opt(s.instability_p95)}, {"pixels", s.instability_pixels}}},
+                       {"instability", {{"mean", opt(s.instability_mean)}, {"p95", opt(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions}}},
                        {"ghosting", {{"disoccluded_psnr", opt(s.disoccluded_psnr)}, {"elsewhere_psnr", opt(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
                        {"convergence", convergence},
                        {"nonfinite", s.nonfinite}});

@@ -44,6 +44,12 @@ struct SequenceSummary {
   std::string technique, label;
   std::optional<double> instability_mean, instability_p95;  // over every pair's pixels
   std::size_t instability_pixels = 0;
+  struct RegionInstability {
+    std::string region;
+    std::optional<double> mean, p95;
+    std::size_t pixels = 0;
+  };
+  std::vector<RegionInstability> instability_regions;  // breakdown.h's regions, report order
   std::optional<double> disoccluded_psnr, elsewhere_psnr;   // final image vs truth
   std::size_t disoccluded_pixels = 0;
   std::vector<std::optional<double>> convergence;           // PSNR per truth frame

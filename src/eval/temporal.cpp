@@ -29,6 +29,16 @@ std::vector<float> excess_change(const std::vector<int>& previous, const Tempora
                                  const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                  const RgbaImageF& truth_before) {
   std::vector<float> out;
+  for (float v : excess_change_map(previous, now, before, technique_now, technique_before, truth_now, truth_before))
+    if (v >= 0.0f) out.push_back(v);
+  return out;
+}
+
+std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
+                                     const TemporalFrame& before, const RgbaImageF& technique_now,
+                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                     const RgbaImageF& truth_before) {
+  std::vector<float> out(previous.size(), -1.0f);
   auto change = [](const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_t j) {
     float s = 0;
     for (std::size_t c = 0; c < 3; ++c) s += std::abs(a.pixels[i * 4 + c] - b.pixels[j * 4 + c]);
@@ -40,7 +50,7 @@ std::vector<float> excess_change(const std::vector<int>& previous, const Tempora
     if (!before.reflective[j]) continue;
     const float excess = change(technique_now, i, technique_before, j) - change(truth_now, i, truth_before, j);
     // A non-finite image is flicker without bound; the metric must not hide it as NaN.
-    out.push_back(std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f);
+    out[i] = std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f;
   }
   return out;
 }

@@ -34,6 +34,11 @@ std::vector<float> excess_change(const std::vector<int>& previous, const Tempora
                                  const TemporalFrame& before, const RgbaImageF& technique_now,
                                  const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                  const RgbaImageF& truth_before);
+// The same per pixel of `now` (-1 where it is not measured), for breakdowns by region.
+std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
+                                     const TemporalFrame& before, const RgbaImageF& technique_now,
+                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                     const RgbaImageF& truth_before);
 
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.
