@@ -47,6 +47,9 @@ class PlanarTechnique final : public TechniqueWithParams<PlanarParams> {
       mirror_geometry_ = in.geometry_id;
     }
     mirror_->resize(in.width, in.height);
+    // The frame's lighting as it is now (the viewer edits it live; the mirror renderer caches
+    // its inputs and would otherwise keep the lights it was built with).
+    mirror_->set_lighting(in.scene.lights, in.scene.environment, in.scene.ambient);
     const Camera& cam = in.camera;
     for (std::size_t k = 0; k < in.scene.reflectors.size(); ++k) {
       const Reflector& r = in.scene.reflectors[k];

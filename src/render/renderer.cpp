@@ -247,9 +247,11 @@ void Renderer::begin_frame(const FrameRequest& request) {
   time_ = request.time;
   matrices_ = camera_matrices(camera_, width_, height_);
   const bool moving = !scene_.animation.objects.empty();
-  if (moving) {
+  if (moving && (!posed_ || posed_time_ != time_.seconds)) {
+    // A new pose (only when the time changed: caches keyed on geometry_id_ stay valid).
     models_ = mesh_transforms(scene_, time_.seconds);
     posed_ = std::make_unique<Scene>(ssr::posed_scene(scene_, time_.seconds));
+    posed_time_ = time_.seconds;
     geometry_id_ = next_id();
   }
   prev_models_ = continues && moving ? previous_models : models_;

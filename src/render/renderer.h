@@ -136,7 +136,8 @@ class Renderer {
   Scene scene_;
   gl::ShaderSource shaders_;
   std::unique_ptr<GpuScene> gpu_scene_;
-  std::unique_ptr<Scene> posed_;  // the scene at time_ (only for scenes with moving objects)
+  std::unique_ptr<Scene> posed_;  // the scene at posed_time_ (only for scenes with moving objects)
+  float posed_time_ = 0;
   int width_ = 0, height_ = 0;
   GBuffer gbuffer_;
   gl::Texture2D lit_, motion_, reflection_, color_, display_, linear_, debug_, refraction_;

@@ -192,3 +192,28 @@ TEST(Frame, OddAndTinySizes) {
   EXPECT_THROW(r.resize(1 << 20, 10), InputError);
   ssr::test::expect_no_gl_errors();
 }
+
+// The frame renders its inputs once per frame and caches them; a lighting change must still
+// reach every technique, the planar oracle's own mirrored renders included.
+TEST(Frame, LightingChangeReachesCachedInputs) {
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, 96, 54);
+  for (const char* name : {"linear", "planar"}) {
+    auto t = create_technique(name);
+    t->load(r.shaders());
+    r.set_lighting(scene.lights, scene.environment, scene.ambient);
+    r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
+    const RgbaImageF before = r.read_texture(r.reflection());
+    std::vector<Light> dim = scene.lights;
+    for (Light& l : dim) l.intensity *= 0.25f;
+    r.set_lighting(dim, scene.environment, scene.ambient);
+    r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
+    const RgbaImageF after = r.read_texture(r.reflection());
+    double sum_before = 0, sum_after = 0;
+    for (std::size_t i = 0; i < before.pixels.size(); i += 4) {
+      sum_before += before.pixels[i];
+      sum_after += after.pixels[i];
+    }
+    EXPECT_LT(sum_after, 0.9 * sum_before) << name << ": the dimmed lights did not reach its reflection";
+  }
+}
