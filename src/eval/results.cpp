@@ -34,18 +34,16 @@ std::string fixed_text(double v, int decimals) {
 }
 
 
-nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-
 nlohmann::json class_json(const ClassFigures& f, PixelClass c) {
-  nlohmann::json j{{"pixels", f.pixels}, {"psnr", opt(f.psnr)}, {"psnr_reflection", opt(f.psnr_reflection)}};
+  nlohmann::json j{{"pixels", f.pixels}, {"psnr", optional_json(f.psnr)}, {"psnr_reflection", optional_json(f.psnr_reflection)}};
   if (c == PixelClass::Traceable) {
-    j["psnr_ideal"] = opt(f.psnr_ideal);
-    j["psnr_reflection_ideal"] = opt(f.psnr_reflection_ideal);
-    j["coverage"] = opt(f.coverage);
-    j["correct_coverage"] = opt(f.correct_coverage);
-    j["noise_floor_psnr"] = opt(f.noise_floor_psnr);
+    j["psnr_ideal"] = optional_json(f.psnr_ideal);
+    j["psnr_reflection_ideal"] = optional_json(f.psnr_reflection_ideal);
+    j["coverage"] = optional_json(f.coverage);
+    j["correct_coverage"] = optional_json(f.correct_coverage);
+    j["noise_floor_psnr"] = optional_json(f.noise_floor_psnr);
   } else {
-    j["false_hit_rate"] = opt(f.false_hit_rate);
+    j["false_hit_rate"] = optional_json(f.false_hit_rate);
   }
   return j;
 }
@@ -70,9 +68,6 @@ nlohmann::json technique_json(const TechniqueResult& r) {
   };
 }
 
-nlohmann::json device_json(const DeviceInfo& d) {
-  return nlohmann::json{{"renderer", d.renderer}, {"version", d.version}, {"clock", d.clock}};
-}
 
 // The run without device and revision.
 nlohmann::json run_json(const RunResults& run) {
@@ -83,15 +78,15 @@ nlohmann::json run_json(const RunResults& run) {
       {"scene", run.scene},
       {"results", std::move(results)},
       {"inherent_psnr", run.inherent_psnr},
-      {"inherent", {{"traceable", opt(run.inherent.traceable)},
-                    {"missing", opt(run.inherent.missing)},
-                    {"sky", opt(run.inherent.sky)}}},
+      {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
+                    {"missing", optional_json(run.inherent.missing)},
+                    {"sky", optional_json(run.inherent.sky)}}},
   };
   if (run.oracles)
-    j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", opt(run.oracles->psnr)},
-                    {"within_1_255", opt(run.oracles->within_1_255)},
+    j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", optional_json(run.oracles->psnr)},
+                    {"within_1_255", optional_json(run.oracles->within_1_255)},
                     {"edge_pixels", run.oracles->edge_pixels},
-                    {"psnr_off_edges", opt(run.oracles->psnr_off_edges)}};
+                    {"psnr_off_edges", optional_json(run.oracles->psnr_off_edges)}};
   return j;
 }
 
@@ -131,6 +126,12 @@ std::string pad_right(const std::string& s, std::size_t w) {
 }
 
 }  // namespace
+
+nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+nlohmann::json device_json(const DeviceInfo& d) {
+  return nlohmann::json{{"renderer", d.renderer}, {"version", d.version}, {"clock", d.clock}};
+}
 
 nlohmann::json error_json(const ErrorMetrics& e) {
   return nlohmann::json{

@@ -79,6 +79,10 @@ std::string results_table(const RunResults& run, const std::string& clock);
 // `regions` (names as Region::name() gives them) keeps only those rows, empty keeps all.
 std::string breakdown_table(const RunResults& run, const std::vector<std::string>& regions = {});
 
+// A figure that may be absent: null when it is (and, as nlohmann writes them, when not finite).
+nlohmann::json optional_json(const std::optional<double>& v);
+// {"renderer", "version", "clock"}.
+nlohmann::json device_json(const DeviceInfo& d);
 // The "error" object of one result (pooled figures).
 nlohmann::json error_json(const ErrorMetrics& e);
 // The "regions" object of one result (README: results JSON).

@@ -230,9 +230,9 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
   return compare_oracles(frame.labels(), planar.reflected, frame.truth_reflected(), eligible);
 }
 
-std::vector<bool> reflective_pixels(const Renderer& r) {
-  const std::vector<std::uint16_t> material = r.read_material();
-  const std::vector<float> depth = r.read_depth();
+std::vector<bool> reflective_pixels(const Renderer& r) { return reflective_pixels(r.read_material(), r.read_depth()); }
+
+std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth) {
   std::vector<bool> out(depth.size());
   for (std::size_t i = 0; i < out.size(); ++i)
     out[i] = depth[i] > 0.0f && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;

@@ -110,6 +110,8 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
 // The pixels that do reflection work in the renderer's current G-buffer (row 0 = top): the
 // pixels every pooled figure covers.
 std::vector<bool> reflective_pixels(const Renderer& r);
+// The same from read-back material (4 values a pixel) and depth.
+std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth);
 
 // The parameters of a technique as key -> text, in table order (for results).
 std::vector<std::pair<std::string, std::string>> param_list(Technique& t);

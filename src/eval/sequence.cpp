@@ -11,7 +11,6 @@
 #include "eval/svg_plot.h"
 #include "eval/temporal.h"
 #include "scene/animation.h"
-#include "shared/bindings.h"
 
 namespace ssr {
 
@@ -37,12 +36,10 @@ TemporalFrame read_temporal(const Renderer& r) {
   const std::size_t n = depth.size();
   f.motion.resize(n);
   f.object.resize(n);
-  f.reflective.resize(n);
+  f.reflective = reflective_pixels(material, depth);
   for (std::size_t i = 0; i < n; ++i) {
     f.motion[i] = {motion.pixels[i * 4], motion.pixels[i * 4 + 1]};
-    const bool geometry = depth[i] > 0.0f;
-    f.object[i] = geometry ? static_cast<std::uint32_t>(material[i * 4 + 3]) + 1u : 0u;
-    f.reflective[i] = geometry && (material[i * 4 + 2] & MATERIAL_FLAG_REFLECTIVE) != 0;
+    f.object[i] = depth[i] > 0.0f ? static_cast<std::uint32_t>(material[i * 4 + 3]) + 1u : 0u;
   }
   return f;
 }
@@ -215,12 +212,6 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   return out;
 }
 
-namespace {
-nlohmann::json opt(const std::optional<double>& v) {
-  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-}  // namespace
-
 nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revision, const SequenceResults& r) {
   nlohmann::json frames = nlohmann::json::array();
   for (const SequenceFrame& f : r.frames) {
@@ -229,7 +220,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
       nlohmann::json j{{"technique", t.technique}, {"label", t.label}, {"nonfinite", t.nonfinite},
                        {"error", t.error ? error_json(*t.error) : nlohmann::json(nullptr)},
                        {"regions", t.breakdown ? breakdown_json(*t.breakdown) : nlohmann::json(nullptr)},
-                       {"instability", opt(t.instability)}};
+                       {"instability", optional_json(t.instability)}};
       results.push_back(std::move(j));
     }
     frames.push_back({{"index", f.index}, {"time", f.time}, {"cut", f.cut}, {"truth", f.truth}, {"results", results}});
@@ -237,18 +228,18 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
   nlohmann::json summary = nlohmann::json::array();
   for (const SequenceSummary& s : r.summary) {
     nlohmann::json convergence = nlohmann::json::array();
-    for (const auto& p : s.convergence) convergence.push_back(opt(p));
+    for (const auto& p : s.convergence) convergence.push_back(optional_json(p));
     nlohmann::json regions = nlohmann::json::object();
     for (const auto& ri : s.instability_regions)
-      regions[ri.region] = {{"mean", opt(ri.mean)}, {"p95", opt(ri.p95)}, {"pixels", ri.pixels}};
+      regions[ri.region] = {{"mean", optional_json(ri.mean)}, {"p95", optional_json(ri.p95)}, {"pixels", ri.pixels}};
     summary.push_back({{"technique", s.technique},
                        {"label", s.label},
-                       {"instability", {{"mean", opt(s.instability_mean)}, {"p95", opt(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions}}},
-                       {"ghosting", {{"disoccluded_psnr", opt(s.disoccluded_psnr)}, {"elsewhere_psnr", opt(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
+                       {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions}}},
+                       {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
                        {"convergence", convergence},
                        {"nonfinite", s.nonfinite}});
   }
-  return {{"device", {{"renderer", device.renderer}, {"version", device.version}, {"clock", device.clock}}},
+  return {{"device", device_json(device)},
           {"revision", revision},
           {"scene", r.scene},
           {"path", r.path},
