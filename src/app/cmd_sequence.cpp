@@ -39,18 +39,6 @@ struct SequenceOptions {
   std::string gl = "auto";
 };
 
-// Rows of equal width, stacked with a dark gap.
-RgbaImage8 vstack(const std::vector<RgbaImage8>& rows, int gap = 4) {
-  RgbaImage8 out{rows.front().width, 0, {}};
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (i > 0) out.pixels.insert(out.pixels.end(), static_cast<std::size_t>(out.width) * gap * 4, 48);
-    out.pixels.insert(out.pixels.end(), rows[i].pixels.begin(), rows[i].pixels.end());
-    out.height += rows[i].height + (i > 0 ? gap : 0);
-  }
-  for (std::size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 255;
-  return out;
-}
-
 // One row a technique: its final image | the truth | |difference| heat map.
 RgbaImage8 compose(const SequenceImages& im, const std::vector<std::string>& labels, int w, int h) {
   const RgbaImage8 black{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 4, 0)};

@@ -248,6 +248,26 @@ RgbaImage8 hstack(const std::vector<RgbaImage8>& panels, int gap) {
   return out;
 }
 
+RgbaImage8 vstack(const std::vector<RgbaImage8>& rows, int gap) {
+  RgbaImage8 out;
+  if (rows.empty()) return out;
+  gap = std::max(gap, 0);
+  out.width = rows[0].width;
+  for (const auto& r : rows) {
+    if (r.width != out.width) throw RuntimeError("vstack: the rows differ in width.");
+    out.height += r.height;
+  }
+  out.height += gap * int(rows.size() - 1);
+  out.pixels.assign(std::size_t(out.width) * out.height * 4, 48);  // dark grey gaps
+  for (std::size_t i = 3; i < out.pixels.size(); i += 4) out.pixels[i] = 255;
+  std::size_t at = 0;
+  for (const auto& r : rows) {  // rows are contiguous: one copy each
+    std::memcpy(&out.pixels[at], r.pixels.data(), r.pixels.size());
+    at += r.pixels.size() + std::size_t(out.width) * gap * 4;
+  }
+  return out;
+}
+
 namespace {
 // stb_easy_font indexes its tables with (c - 32): anything else would read out of bounds.
 std::string printable(const std::string& text) {

@@ -54,6 +54,8 @@ class VideoWriter {
 // Panels left to right with `gap` dark grey columns between them. Heights must match
 // (RuntimeError otherwise); no panels give an empty image.
 RgbaImage8 hstack(const std::vector<RgbaImage8>& panels, int gap = 4);
+// Rows of equal width stacked top to bottom, with the same gaps (RuntimeError on other widths).
+RgbaImage8 vstack(const std::vector<RgbaImage8>& rows, int gap = 4);
 
 // Size (w, h) of the box draw_label fills for `text` (stb_easy_font, `scale` pixels per font unit).
 std::pair<int, int> label_size(const std::string& text, int scale = 2);

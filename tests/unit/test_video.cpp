@@ -89,6 +89,21 @@ TEST(Video, HstackPutsPanelsSideBySideWithGreyGaps) {
   EXPECT_THROW(hstack({solid(5, 4, 1), solid(5, 3, 1)}), RuntimeError);
 }
 
+TEST(Video, VstackPutsRowsTopToBottomWithGreyGaps) {
+  const RgbaImage8 out = vstack({solid(6, 10, 200), solid(6, 7, 100)}, 4);
+  EXPECT_EQ(out.width, 6);
+  EXPECT_EQ(out.height, 10 + 4 + 7);
+  ASSERT_EQ(out.pixels.size(), std::size_t(out.width) * out.height * 4);
+  EXPECT_EQ(px(out, 5, 9)[0], 200);
+  EXPECT_NE(px(out, 3, 12)[0], 200);  // the gap
+  EXPECT_NE(px(out, 3, 12)[0], 100);
+  EXPECT_EQ(px(out, 3, 12)[3], 255);
+  EXPECT_EQ(px(out, 0, 14)[0], 100);
+  EXPECT_EQ(px(out, 5, 20)[0], 100);
+  EXPECT_EQ(vstack({}).height, 0);
+  EXPECT_THROW(vstack({solid(5, 4, 1), solid(4, 4, 1)}), RuntimeError);
+}
+
 TEST(Video, DrawLabelChangesPixelsInsideItsBoxOnly) {
   RgbaImage8 im = solid(120, 50, 128);
   const RgbaImage8 before = im;
