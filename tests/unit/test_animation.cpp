@@ -13,6 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "input_error.h"
 #include "core/errors.h"
 #include "scene/animation.h"
 #include "scene/builtin_scenes.h"
@@ -30,28 +31,8 @@ using ssr::Scene;
 
 const std::string kPedestal = std::string(SSRLAB_TEST_DATA) + "/../../assets/scenes/pedestal.json";
 
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "expected ssr::InputError, got another exception: " << e.what();
-    return {};
-  }
-  ADD_FAILURE() << "expected ssr::InputError, nothing was thrown";
-  return {};
-}
-
-// One sentence: no line break, ends with a full stop, contains every expected fragment.
-void expect_message(const std::string& msg, const std::vector<std::string>& fragments) {
-  ASSERT_FALSE(msg.empty());
-  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  EXPECT_EQ(msg.back(), '.') << msg;
-  for (const std::string& f : fragments)
-    EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
-}
+using ssr::test::expect_message;
+using ssr::test::input_error;
 
 bool finite(const glm::mat4& m) {
   for (int c = 0; c < 4; ++c)

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error.h"
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene.h"
@@ -23,29 +24,8 @@ const std::string kObj = kData + "/obj/";
 const std::string kJson = kData + "/json/";
 const std::string kPedestal = kData + "/../../assets/scenes/pedestal.json";
 
-// The message of the InputError `f` throws; a test failure when it throws nothing or another type.
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "expected ssr::InputError, got another exception: " << e.what();
-    return {};
-  }
-  ADD_FAILURE() << "expected ssr::InputError, nothing was thrown";
-  return {};
-}
-
-// One sentence: no line break, ends with a full stop, contains every expected fragment.
-void expect_message(const std::string& msg, const std::vector<std::string>& fragments) {
-  ASSERT_FALSE(msg.empty());
-  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-  EXPECT_EQ(msg.back(), '.') << msg;
-  for (const std::string& f : fragments)
-    EXPECT_NE(msg.find(f), std::string::npos) << "'" << f << "' not in: " << msg;
-}
+using ssr::test::expect_message;
+using ssr::test::input_error;
 
 const ssr::Mesh* find_mesh(const Scene& s, const std::string& name) {
   for (const ssr::Mesh& m : s.meshes)
