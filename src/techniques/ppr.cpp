@@ -4,6 +4,10 @@
 // back to itself into an r32ui intermediate image at the destination pixel. Resolve pass:
 // decode, patch holes from neighbours, fetch the reflected colour; normal maps and roughness
 // by the thesis's reprojection of the perturbed (or GGX-sampled) reflection vector.
+#include <algorithm>
+#include <iterator>
+#include <string_view>
+
 #include "scene/scene.h"
 #include "shared/ppr.h"
 #include "shared/ppr_packing.h"
@@ -124,8 +128,10 @@ class PprTechnique final : public TechniqueWithParams<P> {
   gl::Program clear_, project_, resolve_;
   // The fallback tracer at its defaults, created when the parameter names it (no GL needed).
   Technique& fallback_technique() const {
-    ParamSet table = const_cast<PprTechnique*>(this)->params();
-    const std::string name = table.to_string(static_cast<std::size_t>(table.find("fallback")));
+    // The choice's name, from the table row that describes it.
+    const auto row = std::find_if(std::begin(kTable), std::end(kTable),
+                                  [](const ParamDesc& d) { return std::string_view(d.name) == "fallback"; });
+    const std::string name = row->choices[static_cast<std::size_t>(params_.fallback)];
     if (!fallback_ || fallback_->name() != name) {
       fallback_ = create_technique(name);
       fallback_loaded_ = false;
