@@ -241,12 +241,12 @@ void Renderer::begin_frame(const FrameRequest& request) {
                          !request.time.cut && settings == frame_settings_;
   const float previous_seconds = time_.seconds;
   const glm::mat4 previous_view_proj = matrices_.proj * matrices_.view;
-  const std::vector<glm::mat4> previous_models = models_;
 
   camera_ = request.camera;
   time_ = request.time;
   matrices_ = camera_matrices(camera_, width_, height_);
   const bool moving = !scene_.animation.objects.empty();
+  std::vector<glm::mat4> prev_models = models_;
   if (moving && (!posed_ || posed_time_ != time_.seconds)) {
     // A new pose (only when the time changed: caches keyed on geometry_id_ stay valid).
     models_ = mesh_transforms(scene_, time_.seconds);
@@ -254,9 +254,8 @@ void Renderer::begin_frame(const FrameRequest& request) {
     posed_time_ = time_.seconds;
     geometry_id_ = next_id();
   }
-  prev_models_ = continues && moving ? previous_models : models_;
-  prev_view_proj_ = continues ? previous_view_proj : matrices_.proj * matrices_.view;
-  gpu_scene_->set_transforms(models_, prev_models_);
+  if (!continues) prev_models = models_;  // no previous frame: no object motion either
+  gpu_scene_->set_transforms(models_, prev_models);
   if (history_ && continues) {
     // The ring: this frame renders into last frame's history targets.
     std::swap(lit_, history_->lit);
@@ -291,7 +290,7 @@ void Renderer::begin_frame(const FrameRequest& request) {
   f.settings = {scene_.ambient, settings.exposure, settings.reflective_f0, 0.0f};
   f.counts = {gpu_scene_->light_count(), static_cast<int>(scene_.reflectors.size()), time_.index, 0};
   f.clip_plane = settings.clip_plane;
-  f.prev_view_proj = prev_view_proj_;
+  f.prev_view_proj = continues ? previous_view_proj : f.view_proj;
   f.time = {time_.seconds, continues ? time_.seconds - previous_seconds : 0.0f, continues ? 1.0f : 0.0f, 0.0f};
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
 }

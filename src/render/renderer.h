@@ -131,7 +131,6 @@ class Renderer {
   void display_pass(ViewMode view, gl::PassTimer* timer);
   void keep_color(TechniqueState& state);
   void attach_gbuffer();
-  void upload_uniforms();
 
   Scene scene_;
   gl::ShaderSource shaders_;
@@ -146,11 +145,10 @@ class Renderer {
   gl::Program gbuffer_prog_, glass_prog_, lighting_prog_, composite_prog_, display_prog_;
   HizPyramid hiz_;
   CameraMatrices matrices_{};
-  glm::mat4 prev_view_proj_{1.0f};
-  std::vector<glm::mat4> models_, prev_models_;  // per mesh, this frame and the previous one
+  std::vector<glm::mat4> models_;  // per mesh, this frame's animation transforms (empty: static)
   int blend_ = 0;  // the last technique's composite blend
   Camera camera_{};
-  FrameTime time_{}, prev_time_{};
+  FrameTime time_{};
   FrameSettings frame_settings_{};  // the settings the current inputs were rendered with
   bool inputs_valid_ = false;       // the targets hold the frame described by camera_/time_
   bool history_valid_ = false;
