@@ -4,6 +4,7 @@
 #include "common/environment.glsl"
 #include "shared/tonemap.h"
 #include "shared/display.h"
+#include "shared/classification.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
@@ -16,6 +17,7 @@ layout(binding = TEX_DEBUG) uniform sampler2D debug_tex;
 layout(binding = TEX_GLASS_SURFACE) uniform sampler2D glass_surface_tex;
 layout(binding = TEX_REFRACTION) uniform sampler2D refraction_tex;
 layout(binding = TEX_MOTION) uniform sampler2D motion_tex;
+layout(binding = TEX_STAGE_VIEW) uniform sampler2D stage_tex;  // a stage view's texture (any size)
 
 // Hue from an angle (radians), full saturation.
 vec3 hue(float a) {
@@ -37,6 +39,8 @@ void main() {
     v = texelFetch(color_tex, p, 0).rgb;
   } else if (u_view == VIEW_REFLECTION) {
     v = texelFetch(reflection_tex, p, 0).rgb;
+  } else if (u_view == VIEW_RAW || u_view == VIEW_SPATIAL || u_view == VIEW_TEMPORAL) {
+    v = textureLod(stage_tex, pixel_to_uv(p), 0.0).rgb;
   } else if (u_view == VIEW_LIT) {
     v = texelFetch(lit_tex, p, 0).rgb;
   } else if (u_view == VIEW_REFLECTED) {
@@ -76,6 +80,13 @@ void main() {
       float len = length(m);
       v = len > 1e-4 ? hue(atan(m.y, m.x)) * clamp(len / 16.0, 0.0, 1.0) : vec3(0.0);
     }
+    else if (u_view == VIEW_CLASSES) {
+      const vec3 colours[4] = vec3[4](vec3(0.0), vec3(0.2, 0.35, 1.0), vec3(0.2, 0.85, 0.3), vec3(1.0, 0.85, 0.2));
+      v = colours[clamp(int(textureLod(stage_tex, pixel_to_uv(p), 0.0).r * CLASS_LEVELS + 0.5), 0, 3)];
+    }
+    else if (u_view == VIEW_RAY_LENGTH) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 20.0);
+    else if (u_view == VIEW_VARIANCE) v = heat(sqrt(max(textureLod(stage_tex, pixel_to_uv(p), 0.0).r, 0.0)));
+    else if (u_view == VIEW_HISTORY) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 32.0);
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);

@@ -8,6 +8,7 @@
 #define UBO_FRAME 0      // FrameUniforms (shared/frame.h)
 #define UBO_DRAW 1       // DrawUniforms: per G-buffer draw (shared/frame.h)
 #define UBO_TECHNIQUE 2  // the running technique's Params struct (shared/<technique>.h)
+#define UBO_PASS 3       // a technique-internal pass's own parameters (classification, denoiser stages)
 
 // Shader storage buffers
 #define SSBO_LIGHTS 0          // GpuLight[]
@@ -15,6 +16,7 @@
 #define SSBO_REF_PIXELS 2      // reference: ReferencePixel[]
 #define SSBO_REF_MATERIALS 3   // reference: ReferenceMaterial[]
 #define SSBO_PPR_REFLECTORS 4  // ppr: PprReflector[] (shared/ppr.h)
+#define SSBO_TILES 5           // classification: TileListHeader + packed trace tiles (shared/classification.h)
 
 // Textures (texture units). The frame's resources:
 #define TEX_DEPTH 0             // D32F reversed-Z
@@ -46,6 +48,15 @@
 #define TEX_DIFF_B 25           // viewer difference pass: side B's display image
 #define TEX_REF_MAP0 26         // reference: units TEX_REF_MAP0 .. + REFERENCE_MAX_TEXTURES - 1
 #define REFERENCE_MAX_TEXTURES 8  // albedo and normal maps the reference's shading can sample
+#define TEX_CLASS 34            // classification: R8 class / CLASS_LEVELS per pixel (shared/classification.h)
+#define TEX_BLUE_NOISE 35       // R8 spatio-temporal blue noise, slices stacked vertically
+#define TEX_TRACE_RADIANCE 36   // denoiser input: the trace's radiance, confidence (trace resolution)
+#define TEX_TRACE_RAY 37        // denoiser input: hit vector (view space), pdf (trace resolution)
+#define TEX_STAGE_IN 38         // denoiser: the previous stage's radiance, confidence
+#define TEX_STAGE_STATS 39      // denoiser: the previous stage's variance, ray length / history length
+#define TEX_HISTORY 40          // denoiser: last frame's accumulated radiance (persistent)
+#define TEX_HISTORY_STATS 41    // denoiser: last frame's variance, history length (persistent)
+#define TEX_STAGE_VIEW 42       // display: the technique texture a stage view shows (TechniqueDecl::stage_views)
 
 // Images (image units; GL guarantees 8)
 #define IMG_OUT 0               // the running pass's main output

@@ -19,4 +19,12 @@
 #define VIEW_HOLES 14       // PPR: red = hole before patching, yellow = still a hole after
 #define VIEW_REFLECTED 15   // what the composite weights: mix(env, reflection.rgb, a); through glass mix(lit, refraction.rgb, a)
 #define VIEW_MOTION 16     // motion vectors (G-buffer): hue = direction, brightness = length
-#define VIEW_COUNT 17
+// Stage views: a technique texture at TEX_STAGE_VIEW (TechniqueDecl::stage_views)
+#define VIEW_CLASSES 17     // classification: black none, blue environment, green traced, yellow reused
+#define VIEW_RAW 18         // the trace's radiance (premultiplied by confidence), tone mapped
+#define VIEW_RAY_LENGTH 19  // mean hit length after spatial reuse, heat map (0 .. 20 world units)
+#define VIEW_SPATIAL 20     // after spatial reconstruction, tone mapped
+#define VIEW_TEMPORAL 21    // after temporal accumulation, tone mapped
+#define VIEW_VARIANCE 22    // luminance variance estimate (r), sqrt as a heat map (0 .. 1)
+#define VIEW_HISTORY 23     // frames accumulated (g), heat map (0 .. 32)
+#define VIEW_COUNT 24

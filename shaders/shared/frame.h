@@ -23,6 +23,8 @@ struct FrameUniforms {
   mat4 prev_view_proj; // the previous frame's view_proj (= view_proj when history is not valid)
   vec4 time;           // x seconds, y seconds since the previous frame, z 1 when the history
                        // (previous-frame resources) is valid, w unused
+  mat4 prev_view;      // the previous frame's view (= view when history is not valid): its
+                       // view-space normals (TEX_PREV_NORMAL_ROUGHNESS) are in this frame
 };
 
 // Motion vectors (TEX_MOTION, RG16F): in pixels, the offset from a pixel's centre to where its

@@ -241,6 +241,7 @@ void Renderer::begin_frame(const FrameRequest& request) {
                          !request.time.cut && settings == frame_settings_;
   const float previous_seconds = time_.seconds;
   const glm::mat4 previous_view_proj = matrices_.proj * matrices_.view;
+  const glm::mat4 previous_view = matrices_.view;
 
   camera_ = request.camera;
   time_ = request.time;
@@ -291,6 +292,7 @@ void Renderer::begin_frame(const FrameRequest& request) {
   f.counts = {gpu_scene_->light_count(), static_cast<int>(scene_.reflectors.size()), time_.index, 0};
   f.clip_plane = settings.clip_plane;
   f.prev_view_proj = continues ? previous_view_proj : f.view_proj;
+  f.prev_view = continues ? previous_view : f.view;
   f.time = {time_.seconds, continues ? time_.seconds - previous_seconds : 0.0f, continues ? 1.0f : 0.0f, 0.0f};
   glNamedBufferSubData(frame_ubo_.id(), 0, sizeof f, &f);
 }
@@ -437,6 +439,9 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
                    hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
                    &refraction_, &debug_, timer, rebind};
   for (gl::Texture2D& tex : state.textures) ctx.textures.push_back(&tex);
+  stage_views_.clear();
+  for (const StageView& v : decl.stage_views)
+    stage_views_.emplace_back(v.view, state.textures.at(static_cast<std::size_t>(v.texture)).id());
   t.run(ctx);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -458,6 +463,10 @@ void Renderer::display_pass(ViewMode view, gl::PassTimer* timer) {
   glBindImageTexture(IMG_OUT, display_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(IMG_OUT2, linear_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glProgramUniform1i(display_prog_.id(), 0, static_cast<int>(view));
+  GLuint stage = debug_.id();  // a valid texture at the unit even when the view reads none
+  for (const auto& [mode, id] : stage_views_)
+    if (mode == view) stage = id;
+  glBindTextureUnit(TEX_STAGE_VIEW, stage);
   display_prog_.dispatch_2d(width_, height_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);

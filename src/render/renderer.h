@@ -152,6 +152,8 @@ class Renderer {
   FrameSettings frame_settings_{};  // the settings the current inputs were rendered with
   bool inputs_valid_ = false;       // the targets hold the frame described by camera_/time_
   bool history_valid_ = false;
+  // The last technique's stage views: the texture each shows (display_pass binds it).
+  std::vector<std::pair<ViewMode, GLuint>> stage_views_;
   bool backfaces_built_ = false, hiz_built_ = false;  // this frame's on-demand resources
   std::uint64_t serial_ = 0;        // frames begun
   std::uint64_t generation_ = 1;    // bumped by anything that invalidates history

@@ -55,11 +55,20 @@ struct TextureDecl {
   bool operator==(const TextureDecl&) const = default;
 };
 
+// A debug view that shows one of the technique's own textures (a stage's output): the display
+// pass samples TextureDecl number `texture` at TEX_STAGE_VIEW (views.h says how it is shown).
+struct StageView {
+  ViewMode view;
+  int texture;
+  bool operator==(const StageView&) const = default;
+};
+
 struct TechniqueDecl {
   std::uint32_t reads = kReadGBuffer | kReadLit;
   bool writes_refraction = false;     // glass pixels' refraction (IMG_REFRACTION); else cleared
   std::vector<ViewMode> debug_views;  // the debug image's views it fills (IMG_OUT2); none: cleared
   std::vector<TextureDecl> textures;  // FrameContext::textures, in this order
+  std::vector<StageView> stage_views; // debug views of those textures (also listed in debug_views)
   int blend = 0;                      // composite: 0 standard, 1 Roberts (mix(lit, refl, a))
   // Handles planar reflector pixels only (ppr without a fallback, the planar oracle): the
   // breakdown reports every other pixel as not handled instead of scoring what it leaves there.

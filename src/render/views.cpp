@@ -23,6 +23,13 @@ const std::vector<ViewInfo>& view_table() {
       {ViewMode::Holes, "holes", "PPR: red = hole before patching, yellow = still a hole after", true},
       {ViewMode::Reflected, "reflected", "the radiance the composite weights: mix(env, reflection, a)", false},
       {ViewMode::Motion, "motion", "motion vectors: hue = direction, brightness = length (16 px = full)", false},
+      {ViewMode::Classes, "classify", "tile classification: black none, blue environment only, green traced, yellow reused", true},
+      {ViewMode::Raw, "raw", "the trace's radiance before denoising (rgb * confidence), tone mapped", true},
+      {ViewMode::RayLength, "ray-length", "mean hit length after spatial reuse, heat map (0 .. 20 world units)", true},
+      {ViewMode::Spatial, "spatial", "after spatial reconstruction (rgb * confidence), tone mapped", true},
+      {ViewMode::Temporal, "temporal", "after temporal accumulation (rgb * confidence), tone mapped", true},
+      {ViewMode::Variance, "variance", "luminance variance estimate: sqrt as a heat map (0 .. 1)", true},
+      {ViewMode::History, "history", "frames accumulated, heat map (0 .. 32)", true},
   };
   return table;
 }

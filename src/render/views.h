@@ -13,6 +13,8 @@ enum class ViewMode : int {
   Roughness = VIEW_ROUGHNESS, Metallic = VIEW_METALLIC, Mask = VIEW_MASK,
   Steps = VIEW_STEPS, Hits = VIEW_HITS, Distance = VIEW_DISTANCE, Offsets = VIEW_OFFSETS,
   Holes = VIEW_HOLES, Reflected = VIEW_REFLECTED, Motion = VIEW_MOTION,
+  Classes = VIEW_CLASSES, Raw = VIEW_RAW, RayLength = VIEW_RAY_LENGTH, Spatial = VIEW_SPATIAL,
+  Temporal = VIEW_TEMPORAL, Variance = VIEW_VARIANCE, History = VIEW_HISTORY,
 };
 
 struct ViewInfo {

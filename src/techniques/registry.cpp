@@ -10,6 +10,7 @@ std::unique_ptr<Technique> make_linear_binary_technique();
 std::unique_ptr<Technique> make_dda_technique();
 std::unique_ptr<Technique> make_hiz_technique();
 std::unique_ptr<Technique> make_ppr_technique();
+std::unique_ptr<Technique> make_stochastic_technique();
 std::unique_ptr<Technique> make_reference_technique();
 std::unique_ptr<Technique> make_planar_technique();
 
@@ -24,6 +25,10 @@ const std::vector<TechniqueInfo>& technique_registry() {
       {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
       {"ppr", "Pixel-Projected Reflections: planar reflectors by projection (imageAtomicMin), hole patching",
        make_ppr_technique},
+      {"stochastic",
+       "stochastic SSR (Diligent, FidelityFX SSSR): tile classification, 1 blue-noise GGX ray per pixel through Hi-Z, "
+       "spatial/temporal/bilateral denoiser",
+       make_stochastic_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
        make_reference_technique},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",

@@ -17,6 +17,7 @@
 #include "shared/linear_binary.h"
 #include "shared/ppr.h"
 #include "shared/reference.h"
+#include "shared/stochastic.h"
 
 using namespace ssr;
 namespace fs = std::filesystem;
@@ -39,11 +40,15 @@ const Layout kLayouts[] = {
     SSR_LAYOUT(DdaParams, "ray.samples", true),
     SSR_LAYOUT(HizParams, "ray.samples", true),
     SSR_LAYOUT(PprParams, "hole_fill", true),
+    SSR_LAYOUT(StochasticParams, "denoise.history", true),
+    SSR_LAYOUT(DenoisePass, "trace.x", true),
+    SSR_LAYOUT(ClassifyParams, "trace_size.x", true),
     SSR_LAYOUT(GpuLight, "position_type.x", false),
     SSR_LAYOUT(PprReflector, "plane.x", false),
     SSR_LAYOUT(ReferenceSample, "position.x", false),
     SSR_LAYOUT(ReferencePixel, "data.x", false),
     SSR_LAYOUT(ReferenceMaterial, "albedo_metallic.x", false),
+    SSR_LAYOUT(TileListHeader, "rays", false),
 };
 #undef SSR_LAYOUT
 
@@ -53,7 +58,7 @@ std::string layout_shader() {
   std::string s =
       "#include \"shared/frame.h\"\n#include \"shared/ray_options.h\"\n#include \"shared/linear.h\"\n"
       "#include \"shared/linear_binary.h\"\n#include \"shared/dda.h\"\n#include \"shared/hiz.h\"\n"
-      "#include \"shared/ppr.h\"\n#include \"shared/reference.h\"\n"
+      "#include \"shared/ppr.h\"\n#include \"shared/reference.h\"\n#include \"shared/stochastic.h\"\n"
       "layout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Sink { float sink; };\n";
   std::string body;
   int i = 0;

@@ -1,0 +1,104 @@
+// The Hi-Z trace (Uludag, GPU Pro 5) over the max-depth pyramid built by hiz_pyramid.comp,
+// shared by `hiz` and `stochastic`. Include after common/ssr_common.glsl.
+//
+// The ray is marched in pixel space with its reversed-Z depth, both affine along the projected
+// segment. Where the ray stays in front of a cell's closest depth (z > max) it skips the cell and
+// climbs a level; elsewhere it may pass behind something, so it descends (first advancing to
+// where it reaches the cell's closest depth) until one pixel confirms the hit with the shared
+// thickness test. The in-front test uses the segment's smaller depth, so rays towards the camera
+// (depth growing) need no separate path. The traversal visits every cell the ray crosses, so it
+// needs no jitter.
+layout(binding = TEX_HIZ) uniform sampler2D hiz_tex;  // R32F, full mip chain
+
+// What one Hi-Z trace is allowed to do.
+struct HizTrace {
+  float max_distance;  // view-space ray length
+  int max_iterations;  // cell visits; a ray still marching at the cap is a miss
+  int start_level;     // pyramid level of the first step
+  int max_level;       // coarsest level the trace climbs to
+  float thickness;     // how far behind the depth buffer still counts as a hit
+  bool backfaces;      // the back-face depth bounds the thickness instead
+};
+
+// The cell of `level` holding pixel-space point q. The last cell of a row/column also covers an
+// odd source's extra texel, hence the clamp (matches the pyramid's footprints).
+ivec2 hiz_cell(vec2 q, int level, ivec2 size) { return min(ivec2(floor(q / float(1 << level))), size - 1); }
+
+// Ray parameter where the ray o + t d (inv_d = 1 / d, no zero components) leaves cell c.
+float cell_exit(vec2 o, vec2 inv_d, ivec2 c, int level, ivec2 size) {
+  float s = float(1 << level);
+  vec2 lo = vec2(c) * s;
+  vec2 hi = mix((vec2(c) + 1.0) * s, frame.viewport.xy, equal(c, size - 1));  // last cell: to the edge
+  vec2 t = (mix(lo, hi, greaterThan(inv_d, vec2(0.0))) - o) * inv_d;
+  return min(t.x, t.y);
+}
+
+TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
+  bool backfaces = h.backfaces;
+  // End the ray just inside the near plane: projecting a point at w <= 0 would flip it.
+  float len = h.max_distance;
+  float near_limit = -frame.clip.x * 1.01;
+  if (dir.z > 1e-6) len = min(len, (near_limit - origin.z) / dir.z);
+  vec2 uv0, uv1;
+  float z0, z1;
+  if (len <= 0.0 || !project_to_uv(origin, uv0, z0) || !project_to_uv(origin + dir * len, uv1, z1))
+    return trace_miss(0.0);
+
+  vec2 res = frame.viewport.xy;
+  vec3 o = vec3(uv0 * res, z0);
+  vec3 d = vec3(uv1 * res, z1) - o;
+  // Rays along the view direction barely move on screen: clamp tiny components so the cell
+  // exits stay finite (they then lie far beyond t = 1).
+  vec2 dxy = vec2(abs(d.x) < 1e-6 ? 1e-6 : d.x, abs(d.y) < 1e-6 ? 1e-6 : d.y);
+  vec2 inv_d = 1.0 / dxy;
+  // Step this far past a cell boundary (0.01 pixel) so the next lookup lands in the next cell.
+  float cross_t = 0.01 / max(abs(dxy.x), abs(dxy.y));
+
+  int top = clamp(h.max_level, 0, textureQueryLevels(hiz_tex) - 1);
+  int level = clamp(h.start_level, 0, top);
+  ivec2 size0 = textureSize(hiz_tex, 0);
+  // Start one cell away, where the ray leaves the origin's pixel; no hit on the starting surface
+  // (see the level-0 test).
+  float t = cell_exit(o.xy, inv_d, hiz_cell(o.xy, 0, size0), 0, size0) + cross_t;
+  bool was_in_front = false;
+  int i = 0;
+  for (; i < h.max_iterations; ++i) {
+    vec2 q = o.xy + d.xy * t;
+    if (t >= 1.0 || any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, res))) break;
+    // The mip chain halves with floor; textureSize with a per-lane lod is wrong on llvmpipe.
+    ivec2 size = max(size0 >> level, ivec2(1));
+    ivec2 c = hiz_cell(q, level, size);
+    float t_exit = min(cell_exit(o.xy, inv_d, c, level, size), 1.0);
+    float closest = texelFetch(hiz_tex, c, level).r;
+    float z_in = o.z + d.z * t, z_out = o.z + d.z * t_exit;
+    if (min(z_in, z_out) > closest) {
+      // In front of everything in the cell: skip it, try a coarser cell next.
+      was_in_front = true;
+      t = t_exit + cross_t;
+      level = min(level + 1, top);
+      continue;
+    }
+    if (z_in > closest) {
+      // The ray enters in front and reaches the closest depth inside the cell (so d.z < 0):
+      // nothing here can be hit before that point.
+      was_in_front = true;
+      t = min(t + (closest - z_in) / d.z, t_exit);
+    }
+    if (level > 0) {
+      --level;
+      continue;
+    }
+    // One pixel: test the segment's point nearest to the surface from behind. Before the ray
+    // has been seen in front, only a surface facing the ray counts: a ray that crosses a wall
+    // within its origin's pixel hits it, one skimming its own surface does not.
+    float hit_depth = min(closest, max(z_in, z_out));
+    vec2 uv = (vec2(c) + 0.5) * frame.viewport.zw;
+    bool facing = dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1;
+    if ((was_in_front || facing) && inside_surface(uv, view_z_from_depth(hit_depth), h.thickness, backfaces))
+      return TraceResult(true, uv, float(i + 1), length(view_position(uv, hit_depth) - origin));
+    // Behind by more than the thickness (or on the starting surface): go on past this pixel.
+    t = t_exit + cross_t;
+  }
+  return trace_miss(float(i));
+}
+

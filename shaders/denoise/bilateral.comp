@@ -1,0 +1,51 @@
+// Denoiser stage 3, cross-bilateral cleanup (src/techniques/denoiser.h; Diligent's
+// SSR_ComputeBilateralCleanup): a (2r+1)^2 Gaussian whose spatial sigma grows with the pixel's
+// relative noise (sqrt(variance) / luminance, from the earlier stages) and with roughness (none
+// on mirrors), and whose range weights come from the G-buffer, not the noisy colour: depth
+// (distance from the pixel's tangent plane), normal and roughness (after SVGF). With the stage
+// off (or r = 0) it only resolves. Writes the technique's reflection: rgb (un-premultiplied),
+// confidence.
+#include "common/brdf.glsl"
+#include "common/gbuffer.glsl"
+#include "common/denoise_common.glsl"
+#include "shared/denoise.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std140, binding = UBO_PASS) uniform PassBlock { DenoisePass pass; };
+layout(binding = TEX_STAGE_IN) uniform sampler2D radiance_tex;  // premultiplied
+layout(binding = TEX_STAGE_STATS) uniform sampler2D stats_tex;  // variance in r
+layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
+
+vec4 resolve(vec4 premultiplied) {
+  return premultiplied.a > 1e-4 ? vec4(premultiplied.rgb / premultiplied.a, min(premultiplied.a, 1.0)) : vec4(0.0);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = ivec2(frame.viewport.xy);
+  if (any(greaterThanEqual(p, size))) return;
+  vec4 centre = texelFetch(radiance_tex, p, 0);
+  GSample g = gbuffer_fetch(p);
+  int r = pass.params.bilateral != 0 ? clamp(pass.params.bilateral_radius, 0, 8) : 0;
+  float noise = clamp(sqrt(texelFetch(stats_tex, p, 0).r) / max(luminance(centre.rgb), 1e-3), 0.0, 1.0);
+  float sigma = mix(0.5, max(pass.params.bilateral_sigma, 0.5), noise) * clamp(g.roughness / 0.2, 0.0, 1.0);
+  if (r == 0 || !is_reflective(g) || sigma < 0.3) {
+    imageStore(out_reflection, p, resolve(centre));
+    return;
+  }
+  vec4 sum = centre;
+  float weight = 1.0;
+  float inv_two_sigma2 = 1.0 / (2.0 * sigma * sigma);
+  for (int y = -r; y <= r; ++y)
+    for (int x = -r; x <= r; ++x) {
+      ivec2 q = p + ivec2(x, y);
+      if ((x == 0 && y == 0) || any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      GSample gq = gbuffer_fetch(q);
+      if (!is_reflective(gq)) continue;
+      float w = exp(-float(x * x + y * y) * inv_two_sigma2) *
+                geometric_weight(g.pos_vs, g.n_vs, g.roughness, gq.pos_vs, gq.n_vs, gq.roughness);
+      sum += w * texelFetch(radiance_tex, q, 0);
+      weight += w;
+    }
+  imageStore(out_reflection, p, resolve(sum / weight));
+}

@@ -1,0 +1,101 @@
+// Denoiser stage 1, spatial reconstruction (src/techniques/denoiser.h): each pixel reuses the
+// rays of its neighbours with the ratio estimator (Stachowiak 2015; Diligent's
+// SSR_ComputeSpatialReconstruction):
+//   L(p) = sum_q L_q f_p(l_q) cos / pdf_q  /  sum_q f_p(l_q) cos / pdf_q
+// where l_q is the direction from p to q's hit point: the BRDF is p's own, the pdf the one q's
+// sample was drawn with, so each pixel keeps its own lobe. The radius grows with roughness;
+// mirror pixels only fill from neighbours where they have no ray (half resolution, quads). With
+// the stage off it is the upsample alone: the nearest rays that stand for this pixel.
+// Writes premultiplied radiance and (luminance variance, mean hit length).
+#include "common/brdf.glsl"
+#include "common/gbuffer.glsl"
+#include "common/denoise_common.glsl"
+#include "shared/denoise.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std140, binding = UBO_PASS) uniform PassBlock { DenoisePass pass; };
+layout(binding = TEX_CLASS) uniform sampler2D class_tex;
+layout(binding = TEX_TRACE_RADIANCE) uniform sampler2D radiance_tex;
+layout(binding = TEX_TRACE_RAY) uniform sampler2D ray_tex;
+layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_radiance;
+layout(binding = IMG_OUT2, rg16f) uniform writeonly image2D out_stats;
+
+struct Accum {
+  vec4 radiance;  // sum of w * (L c, c)
+  float weight;   // sum of w
+  float m1, m2;   // sums of w * luminance, w * luminance^2
+  float length, length_weight;
+};
+
+// Adds the ray of the trace texel that covers pixel q (if it traced this frame) to p's sums.
+// `brdf`: weight by the ratio estimator (glossy p); else by geometry and `kernel` only.
+void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf) {
+  ivec2 size = ivec2(frame.viewport.xy);
+  int d = pass.trace.x;
+  ivec2 t = q / d;
+  ivec2 o = t * d + pass.trace.yz;  // the pixel the texel's ray started from
+  if (any(lessThan(o, ivec2(0))) || any(greaterThanEqual(o, size))) return;
+  if (pixel_class_at(class_tex, o) != CLASS_TRACED) return;
+  GSample go = gbuffer_fetch(o);
+  float w = kernel * geometric_weight(g.pos_vs, g.n_vs, g.roughness, go.pos_vs, go.n_vs, go.roughness);
+  vec4 ray = texelFetch(ray_tex, t, 0);
+  vec4 radiance = texelFetch(radiance_tex, t, 0);
+  if (brdf) {
+    vec3 l = normalize(go.pos_vs + ray.xyz - g.pos_vs);
+    w *= brdf_cos(g.n_vs, v, l, g.roughness) / max(ray.w, 1e-6);
+  }
+  if (!(w > 0.0)) return;
+  float lum = luminance(radiance.rgb);
+  a.radiance += w * radiance;
+  a.weight += w;
+  a.m1 += w * lum;
+  a.m2 += w * lum * lum;
+  if (radiance.a > 0.0) {
+    a.length += w * length(ray.xyz);
+    a.length_weight += w;
+  }
+}
+
+// A Vogel (golden-angle) disk: sample i of n at radius r, turned by `angle`.
+vec2 vogel(int i, int n, float r, float angle) {
+  float rho = r * sqrt((float(i) + 0.5) / float(n));
+  float theta = float(i) * 2.39996323 + angle;
+  return rho * vec2(cos(theta), sin(theta));
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+  uint c = pixel_class_at(class_tex, p);
+  if (c != CLASS_TRACED && c != CLASS_REUSED) {
+    imageStore(out_radiance, p, vec4(0.0));
+    imageStore(out_stats, p, vec4(0.0));
+    return;
+  }
+  GSample g = gbuffer_fetch(p);
+  vec3 v = -normalize(g.pos_vs);
+  bool glossy = g.roughness >= 0.05;
+  Accum a = Accum(vec4(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
+  // Its own ray, if any; else the nearest rays around it (the upsample).
+  add_ray(a, g, v, p, 1.0, glossy);
+  int d = pass.trace.x;
+  bool own = c == CLASS_TRACED && (d == 1 || p == (p / d) * d + pass.trace.yz);
+  if (!own || a.weight == 0.0)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x)
+        if (x != 0 || y != 0) add_ray(a, g, v, p + ivec2(x, y) * d, 0.5, glossy);
+  float radius = pass.params.spatial_radius * clamp(g.roughness * 2.0, 0.0, 1.0);
+  if (pass.params.spatial != 0 && glossy && radius >= 1.0) {
+    // A per-pixel, per-frame turn of the disk: neighbouring pixels pick different neighbours.
+    float angle = 6.28318530718 * fract(0.754877669 * float(p.x) + 0.569840296 * float(p.y) +
+                                         0.61803398875 * float(frame.counts.z));
+    int n = clamp(pass.params.spatial_samples, 1, 32);
+    for (int i = 0; i < n; ++i) add_ray(a, g, v, p + ivec2(round(vogel(i, n, radius, angle))), 1.0, true);
+  }
+  vec4 radiance = a.weight > 0.0 ? a.radiance / a.weight : vec4(0.0);
+  float mean = a.weight > 0.0 ? a.m1 / a.weight : 0.0;
+  float variance = a.weight > 0.0 ? max(a.m2 / a.weight - mean * mean, 0.0) : 0.0;
+  float ray_length = a.length_weight > 0.0 ? a.length / a.length_weight : 0.0;
+  imageStore(out_radiance, p, radiance);
+  imageStore(out_stats, p, vec4(variance, ray_length, 0.0, 0.0));
+}

@@ -1,0 +1,131 @@
+// Denoiser stage 2, temporal accumulation (src/techniques/denoiser.h; Diligent's
+// SSR_ComputeTemporalAccumulation after EA's hybrid ray tracing talk). Two places where this
+// pixel's reflection was last frame:
+//   surface:  where the reflecting surface was (the motion vectors), right for rough lobes and
+//             for still reflections;
+//   parallax: where the reflected point's virtual image was (the point the mean hit length puts
+//             behind the mirror, through last frame's camera), right for sharp reflections under
+//             a moving camera.
+// Each is checked against the surface last frame there (normal, roughness; depth for the
+// surface one); of the valid ones the one closer to this frame's 3x3 neighbourhood wins. Its
+// history is clipped to the neighbourhood's mean +- clip_gamma * sigma and blended with weight
+// 1 / n (n = frames accumulated, at most `history`). Nothing valid: the history restarts.
+// Writes premultiplied radiance and (variance, frames accumulated).
+#include "common/brdf.glsl"
+#include "common/gbuffer.glsl"
+#include "common/denoise_common.glsl"
+#include "shared/denoise.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std140, binding = UBO_PASS) uniform PassBlock { DenoisePass pass; };
+layout(binding = TEX_STAGE_IN) uniform sampler2D current_tex;     // premultiplied radiance
+layout(binding = TEX_STAGE_STATS) uniform sampler2D current_stats;  // variance, mean hit length
+layout(binding = TEX_HISTORY) uniform sampler2D history_tex;     // bilinear
+layout(binding = TEX_HISTORY_STATS) uniform sampler2D history_stats;  // variance, frames
+layout(binding = TEX_MOTION) uniform sampler2D motion_tex;
+layout(binding = TEX_PREV_DEPTH) uniform sampler2D prev_depth_tex;
+layout(binding = TEX_PREV_NORMAL_ROUGHNESS) uniform sampler2D prev_normal_tex;
+layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_radiance;
+layout(binding = IMG_OUT2, rg16f) uniform writeonly image2D out_stats;
+
+// Last frame's uv of a world point; false behind last frame's camera.
+bool previous_uv(vec3 world, out vec2 uv, out float depth) {
+  vec4 c = frame.prev_view_proj * vec4(world, 1.0);
+  if (c.w <= 1e-6) { uv = vec2(-1.0); depth = 0.0; return false; }
+  uv = c.xy / c.w * 0.5 + 0.5;
+  depth = c.z / c.w;
+  return true;
+}
+
+// Was the surface seen at last frame's `uv` like this pixel's (normal and roughness; with
+// `expected_depth` >= 0 also at the depth this pixel's point had there)?
+bool same_surface(vec2 uv, GSample g, float expected_depth) {
+  if (!uv_on_screen(uv)) return false;
+  ivec2 q = ivec2(uv * frame.viewport.xy);
+  float prev_depth = texelFetch(prev_depth_tex, q, 0).r;
+  if (is_background(prev_depth)) return false;
+  vec4 nr = texelFetch(prev_normal_tex, q, 0);
+  if (abs(nr.w - g.roughness) > 0.1) return false;
+  // Last frame's normals are in last frame's view space.
+  vec3 n_prev_view = mat3(frame.prev_view) * view_to_world_dir(g.n_vs);
+  if (dot(nr.xyz, n_prev_view) < 0.9) return false;
+  if (expected_depth < 0.0) return true;
+  float z_prev = view_z_from_depth(prev_depth), z_exp = view_z_from_depth(expected_depth);
+  return abs(z_prev - z_exp) <= 0.03 * abs(z_exp);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+  vec4 current = texelFetch(current_tex, p, 0);
+  vec2 stats = texelFetch(current_stats, p, 0).rg;
+  GSample g = gbuffer_fetch(p);
+  if (!is_reflective(g)) {
+    imageStore(out_radiance, p, vec4(0.0));
+    imageStore(out_stats, p, vec4(0.0));
+    return;
+  }
+  // The 3x3 neighbourhood's mean and spread (reflective neighbours only).
+  vec4 m1 = vec4(0.0), m2 = vec4(0.0);
+  float count = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      ivec2 q = clamp(p + ivec2(x, y), ivec2(0), ivec2(frame.viewport.xy) - 1);
+      vec4 s = texelFetch(current_tex, q, 0);
+      m1 += s;
+      m2 += s * s;
+      count += 1.0;
+    }
+  vec4 mean = m1 / count;
+  vec4 sigma = sqrt(max(m2 / count - mean * mean, vec4(0.0)));
+
+  bool valid = frame.time.z > 0.5;
+  vec3 world = view_to_world_pos(g.pos_vs);
+  vec2 uv_surface, uv_parallax;
+  float depth_surface, depth_unused;
+  // Surface: the motion vector (moving objects included); its expected depth from the camera.
+  uv_surface = (vec2(p) + 0.5 + texelFetch(motion_tex, p, 0).xy) * frame.viewport.zw;
+  vec2 uv_expected;
+  bool surface_ok = valid && previous_uv(world, uv_expected, depth_surface) &&
+                    same_surface(uv_surface, g, depth_surface);
+  // Parallax: the reflected point's virtual image, mean hit length behind the surface along the
+  // view ray.
+  vec3 virtual_point = world + view_to_world_dir(normalize(g.pos_vs)) * stats.g;
+  bool parallax_ok = valid && stats.g > 0.0 && previous_uv(virtual_point, uv_parallax, depth_unused) &&
+                     same_surface(uv_parallax, g, -1.0);
+
+  vec4 history = vec4(0.0);
+  vec2 history_stats_value = vec2(0.0);
+  bool reprojected = false;
+  float best = 1e30;
+  vec3 lum_w = vec3(0.2126, 0.7152, 0.0722);
+  float sigma_lum = max(dot(sigma.rgb, lum_w), 1e-4);
+  if (surface_ok) {
+    vec4 h = textureLod(history_tex, uv_surface, 0.0);
+    best = abs(dot(h.rgb - mean.rgb, lum_w)) / sigma_lum;
+    history = h;
+    history_stats_value = textureLod(history_stats, uv_surface, 0.0).rg;
+    reprojected = true;
+  }
+  if (parallax_ok) {
+    vec4 h = textureLod(history_tex, uv_parallax, 0.0);
+    float distance_to_mean = abs(dot(h.rgb - mean.rgb, lum_w)) / sigma_lum;
+    if (distance_to_mean < best) {
+      history = h;
+      history_stats_value = textureLod(history_stats, uv_parallax, 0.0).rg;
+      reprojected = true;
+    }
+  }
+  vec4 result = current;
+  float variance = stats.r;
+  float frames = 1.0;
+  if (reprojected && history_stats_value.g >= 1.0) {
+    float gamma = pass.params.clip_gamma;
+    history = clamp(history, mean - gamma * sigma, mean + gamma * sigma);
+    frames = min(history_stats_value.g + 1.0, float(max(pass.params.history, 1)));
+    result = mix(history, current, 1.0 / frames);
+    variance = mix(stats.r, history_stats_value.r, clamp(pass.params.variance_stability, 0.0, 1.0));
+  }
+  imageStore(out_radiance, p, result);
+  imageStore(out_stats, p, vec4(variance, frames, 0.0, 0.0));
+}

@@ -1,0 +1,57 @@
+#include "render/classification.h"
+
+#include "gl/timer.h"
+#include "shared/bindings.h"
+
+namespace ssr {
+
+void TileClassifier::load(const gl::ShaderSource& src) {
+  program_ = gl::Program::compute(src, "render/classify.comp");
+}
+
+glm::ivec2 TileClassifier::trace_size(int w, int h, int divisor) {
+  return {(w + divisor - 1) / divisor, (h + divisor - 1) / divisor};
+}
+
+void TileClassifier::classify(const gl::Texture2D& classes, shared::ClassifyParams p, int frame_index,
+                              gl::PassTimer* timer) {
+  gl::ScopedPass pass(timer, "classify");
+  const glm::ivec2 size = trace_size(classes.width(), classes.height(), p.divisor);
+  const glm::ivec2 offset = p.divisor == 2 ? shared::quad_offset(frame_index) : glm::ivec2(0);
+  p.trace_size = {size, offset};
+  const glm::ivec2 tiles = (size + CLASSIFY_TILE - 1) / CLASSIFY_TILE;
+  const std::size_t capacity = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
+  if (!tiles_ || capacity > tiles_capacity_) {
+    tiles_ = gl::make_buffer("classification tiles",
+                             static_cast<GLsizeiptr>(sizeof(shared::TileListHeader) + capacity * sizeof(std::uint32_t)));
+    tiles_capacity_ = capacity;
+  }
+  if (!params_) params_ = gl::make_buffer("classification params", sizeof(shared::ClassifyParams));
+  glNamedBufferSubData(params_.id(), 0, sizeof(p), &p);
+  const shared::TileListHeader empty{0, 1, 1, 0};
+  glNamedBufferSubData(tiles_.id(), 0, sizeof(empty), &empty);
+  glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PASS, params_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_TILES, tiles_.id());
+  glBindImageTexture(IMG_OUT, classes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
+  program_.dispatch_2d(size.x, size.y);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void TileClassifier::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_TILES, tiles_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, tiles_.id());
+}
+
+void TileClassifier::dispatch() const {
+  bind();
+  glDispatchComputeIndirect(0);
+}
+
+shared::TileListHeader TileClassifier::read_header() const {
+  shared::TileListHeader h{};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(tiles_.id(), 0, sizeof(h), &h);
+  return h;
+}
+
+}  // namespace ssr

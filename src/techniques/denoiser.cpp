@@ -1,0 +1,148 @@
+#include "techniques/denoiser.h"
+
+#include "render/classification.h"
+#include "shared/bindings.h"
+#include "shared/classification.h"
+
+namespace ssr {
+
+std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
+  using D = shared::DenoiseParams;
+  auto at = [offset](ParamDesc d, std::size_t field) {
+    d.offset = offset + field;
+    return d;
+  };
+  std::vector<ParamDesc> t;
+  if (with_switch)
+    t.push_back(at({"denoise", ParamType::Bool, 0, 0, 1, 1, "",
+                    "Run the denoiser (spatial, temporal, bilateral stages) on the traced samples."},
+                   offsetof(D, enabled)));
+  t.push_back(at({"spatial", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Denoiser stage 1: reuse neighbours' rays with the ratio estimator (off: upsample only)."},
+                 offsetof(D, spatial)));
+  t.push_back(at({"spatial_samples", ParamType::Int, 0, 1, 32, 1, "rays",
+                  "Neighbours' rays each pixel reuses, besides its own."}, offsetof(D, spatial_samples)));
+  t.push_back(at({"spatial_radius", ParamType::Float, 0, 0, 32, 0.5, "pixels",
+                  "Reuse radius at roughness 0.5 and above; it shrinks linearly to 0 at roughness 0."},
+                 offsetof(D, spatial_radius)));
+  t.push_back(at({"temporal", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Denoiser stage 2: accumulate over frames (motion and hit-parallax reprojection)."},
+                 offsetof(D, temporal)));
+  t.push_back(at({"history", ParamType::Int, 0, 1, 256, 1, "frames",
+                  "Most frames the accumulation averages (blend weight 1/n up to this n)."}, offsetof(D, history)));
+  t.push_back(at({"clip_gamma", ParamType::Float, 0, 0.1, 8, 0.05, "sigma",
+                  "History clipped to the 3x3 neighbourhood's mean +- gamma standard deviations: "
+                  "lower ghosts less and flickers more."}, offsetof(D, clip_gamma)));
+  t.push_back(at({"variance_stability", ParamType::Float, 0, 0, 1, 0.05, "",
+                  "Share of the variance estimate taken from history (Diligent's variance stability factor)."},
+                 offsetof(D, variance_stability)));
+  t.push_back(at({"bilateral", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Denoiser stage 3: cross-bilateral cleanup guided by variance, depth, normal, roughness."},
+                 offsetof(D, bilateral)));
+  t.push_back(at({"bilateral_radius", ParamType::Int, 0, 0, 8, 1, "pixels",
+                  "Half width of the bilateral window ((2r+1)^2 taps)."}, offsetof(D, bilateral_radius)));
+  t.push_back(at({"bilateral_sigma", ParamType::Float, 0, 0.5, 8, 0.1, "pixels",
+                  "Spatial sigma for fully noisy pixels (relative noise 1); less noise, a smaller sigma."},
+                 offsetof(D, bilateral_sigma)));
+  return t;
+}
+
+std::vector<TextureDecl> Denoiser::textures(int trace_divisor) {
+  return {
+      {"classes", GL_R8, 1, false},
+      {"trace radiance", GL_RGBA16F, trace_divisor, false},
+      {"trace ray", GL_RGBA16F, trace_divisor, false},
+      {"spatial", GL_RGBA16F, 1, false},
+      {"spatial stats", GL_RG16F, 1, false},
+      {"temporal", GL_RGBA16F, 1, false},
+      {"temporal stats", GL_RG16F, 1, false},
+      {"history", GL_RGBA16F, 1, true},
+      {"history stats", GL_RG16F, 1, true},
+  };
+}
+
+std::vector<StageView> Denoiser::stage_views(int first, const shared::DenoiseParams& p) {
+  std::vector<StageView> v = {{ViewMode::Classes, first + kClass},
+                              {ViewMode::Raw, first + kTraceRadiance},
+                              {ViewMode::RayLength, first + kSpatialStats},
+                              {ViewMode::Spatial, first + kSpatial}};
+  if (p.temporal) {
+    v.push_back({ViewMode::Temporal, first + kTemporal});
+    v.push_back({ViewMode::History, first + kTemporalStats});
+  }
+  v.push_back({ViewMode::Variance, first + (p.temporal ? kTemporalStats : kSpatialStats)});
+  return v;
+}
+
+void Denoiser::load(const gl::ShaderSource& src) {
+  spatial_ = gl::Program::compute(src, "denoise/spatial.comp");
+  temporal_ = gl::Program::compute(src, "denoise/temporal.comp");
+  bilateral_ = gl::Program::compute(src, "denoise/bilateral.comp");
+}
+
+namespace {
+void bind_out(GLuint unit, const gl::Texture2D& t) {
+  glBindImageTexture(unit, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, t.format());
+}
+void linear_filter(const gl::Texture2D& t) {
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+constexpr GLbitfield kStageBarrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+}  // namespace
+
+void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> tex, const shared::DenoiseParams& p,
+                   int trace_divisor) {
+  const auto& t = [&](Slot s) -> const gl::Texture2D& { return *tex[static_cast<std::size_t>(s)]; };
+  shared::DenoisePass pass{p, {trace_divisor, 0, 0, 0}};
+  if (trace_divisor == 2) {
+    const glm::ivec2 o = shared::quad_offset(frame.time.index);
+    pass.trace.y = o.x;
+    pass.trace.z = o.y;
+  }
+  if (!ubo_) ubo_ = gl::make_buffer("denoiser pass", sizeof(shared::DenoisePass));
+  glNamedBufferSubData(ubo_.id(), 0, sizeof(pass), &pass);
+  glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PASS, ubo_.id());
+  glBindTextureUnit(TEX_CLASS, t(kClass).id());
+  glBindTextureUnit(TEX_TRACE_RADIANCE, t(kTraceRadiance).id());
+  glBindTextureUnit(TEX_TRACE_RAY, t(kTraceRay).id());
+  {
+    gl::ScopedPass timed(frame.timer, p.spatial ? "spatial" : "upsample");
+    bind_out(IMG_OUT, t(kSpatial));
+    bind_out(IMG_OUT2, t(kSpatialStats));
+    spatial_.dispatch_2d(frame.width, frame.height);
+    glMemoryBarrier(kStageBarrier);
+  }
+  const gl::Texture2D* radiance = &t(kSpatial);
+  const gl::Texture2D* stats = &t(kSpatialStats);
+  if (p.temporal) {
+    gl::ScopedPass timed(frame.timer, "temporal");
+    linear_filter(t(kHistory));
+    linear_filter(t(kHistoryStats));
+    glBindTextureUnit(TEX_STAGE_IN, radiance->id());
+    glBindTextureUnit(TEX_STAGE_STATS, stats->id());
+    glBindTextureUnit(TEX_HISTORY, t(kHistory).id());
+    glBindTextureUnit(TEX_HISTORY_STATS, t(kHistoryStats).id());
+    bind_out(IMG_OUT, t(kTemporal));
+    bind_out(IMG_OUT2, t(kTemporalStats));
+    temporal_.dispatch_2d(frame.width, frame.height);
+    glMemoryBarrier(kStageBarrier | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    // This frame's accumulation is next frame's history.
+    glCopyImageSubData(t(kTemporal).id(), GL_TEXTURE_2D, 0, 0, 0, 0, t(kHistory).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       frame.width, frame.height, 1);
+    glCopyImageSubData(t(kTemporalStats).id(), GL_TEXTURE_2D, 0, 0, 0, 0, t(kHistoryStats).id(), GL_TEXTURE_2D, 0,
+                       0, 0, 0, frame.width, frame.height, 1);
+    radiance = &t(kTemporal);
+    stats = &t(kTemporalStats);
+  }
+  {
+    gl::ScopedPass timed(frame.timer, p.bilateral ? "bilateral" : "resolve");
+    glBindTextureUnit(TEX_STAGE_IN, radiance->id());
+    glBindTextureUnit(TEX_STAGE_STATS, stats->id());
+    bind_out(IMG_OUT, *frame.reflection);
+    bilateral_.dispatch_2d(frame.width, frame.height);
+    glMemoryBarrier(kStageBarrier);
+  }
+}
+
+}  // namespace ssr

@@ -1,0 +1,123 @@
+// `stochastic`: stochastic screen-space reflections as engines ship them (Diligent's document,
+// AMD FidelityFX SSSR). Passes, each timed and each with a debug view:
+//   classify   render/classification.h: which pixels trace (roughness threshold, rays per quad,
+//              half resolution), and the list of tiles the trace runs on (indirect dispatch);
+//   trace      shaders/techniques/stochastic_trace.comp: one GGX VNDF ray per traced pixel from
+//              the spatio-temporal blue noise (core/blue_noise.h), GGX bias, Hi-Z; radiance,
+//              hit vector, pdf;
+//   spatial, temporal, bilateral   the denoiser (techniques/denoiser.h).
+// Pixels rougher than the threshold get the composite's environment (confidence 0).
+#include <algorithm>
+#include <cmath>
+
+#include "core/blue_noise.h"
+#include "render/classification.h"
+#include "shared/stochastic.h"
+#include "techniques/denoiser.h"
+#include "techniques/technique.h"
+
+namespace ssr {
+namespace {
+
+using P = shared::StochasticParams;
+
+std::vector<ParamDesc> table() {
+  std::vector<ParamDesc> t = {
+      SSR_PARAM_FLOAT(P, roughness_threshold, 0.0, 1.0, 0.05, "",
+                      "Pixels rougher than this trace no ray: the composite gives them the environment."),
+      SSR_PARAM_CHOICE(P, rays_per_quad,
+                       "Rays per 2x2 quad on pixels rougher than quad_roughness (the traced pixels rotate each "
+                       "frame; the others reuse their neighbours' rays).",
+                       "1", "2", "4"),
+      SSR_PARAM_FLOAT(P, quad_roughness, 0.0, 1.0, 0.05, "",
+                      "Pixels at or below this roughness trace a ray each (full resolution)."),
+      SSR_PARAM_FLOAT(P, ggx_bias, 0.0, 1.0, 0.05, "",
+                      "Pulls the GGX samples towards the lobe's centre: less noise, narrower (biased) reflections."),
+      SSR_PARAM_BOOL(P, half_resolution,
+                     "Trace one pixel of each 2x2 block (rotating each frame); the spatial stage upsamples "
+                     "with depth-aware weights."),
+      SSR_PARAM_BOOL(P, previous_frame,
+                     "Hits read the previous frame's final colour (reflections included): reflections of "
+                     "reflections build up over frames."),
+      with_auto(SSR_PARAM_INT(P, max_iterations, 1, 4096, "iterations",
+                              "Cap on Hi-Z cell visits per ray; auto: half the image diagonal in pixels.")),
+      SSR_PARAM_INT(P, max_level, 0, 15, "level", "Coarsest Hi-Z level the trace climbs to."),
+      SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
+                      "A ray point this far or less behind the depth buffer counts as a hit."),
+      with_auto(SSR_PARAM_FLOAT(P, max_distance, 0.01, 10000.0, 0.5, "world units",
+                                "Length of the traced ray; auto: the scene's bounding-box diagonal.")),
+      SSR_PARAM_INT(P, seed, 0, 1000000, "", "Shifts the blue-noise pattern."),
+  };
+  for (const ParamDesc& d : denoise_options(offsetof(P, denoise), /*with_switch=*/false)) t.push_back(d);
+  return t;
+}
+const std::vector<ParamDesc> kTable = table();
+
+class StochasticTechnique final : public TechniqueWithParams<P> {
+ public:
+  StochasticTechnique() : TechniqueWithParams("stochastic", kTable) {}
+
+  void load(const gl::ShaderSource& src) override {
+    auto trace = gl::Program::compute(src, "techniques/stochastic_trace.comp");
+    classifier_.load(src);
+    denoiser_.load(src);
+    trace_ = std::move(trace);
+    if (!blue_noise_) {
+      const BlueNoise& bn = default_blue_noise();
+      blue_noise_ = gl::Texture2D("stochastic blue noise", GL_R8, bn.size, bn.size * bn.slices);
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTextureSubImage2D(blue_noise_.id(), 0, 0, 0, bn.size, bn.size * bn.slices, GL_RED, GL_UNSIGNED_BYTE,
+                          bn.texels.data());
+    }
+  }
+
+  TechniqueDecl declare() const override {
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadLit | kReadHiz | kReadMotion | kReadPrevDepth | kReadPrevNormal;
+    if (params_.previous_frame) d.reads |= kReadPrevColor;
+    d.textures = Denoiser::textures(divisor());
+    d.stage_views = Denoiser::stage_views(0, params_.denoise);
+    for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
+    return d;
+  }
+
+  void run(const FrameContext& in) override {
+    P p = params_;
+    if (p.max_distance == 0.0f) p.max_distance = std::max(in.scene_diagonal, 0.01f);
+    if (p.max_iterations == 0)
+      p.max_iterations = std::clamp(static_cast<int>(std::ceil(0.5 * std::hypot(double(in.width), double(in.height)))), 1, 4096);
+    const auto tex = std::span<gl::Texture2D* const>(in.textures);
+    const shared::ClassifyParams c{p.roughness_threshold, p.quad_roughness, 1 << p.rays_per_quad, divisor(), {}};
+    classifier_.classify(*tex[Denoiser::kClass], c, in.time.index, in.timer);
+    {
+      gl::ScopedPass pass(in.timer, "trace");
+      bind_params(&p);
+      glBindTextureUnit(TEX_CLASS, tex[Denoiser::kClass]->id());
+      glBindTextureUnit(TEX_BLUE_NOISE, blue_noise_.id());
+      glBindImageTexture(IMG_OUT, tex[Denoiser::kTraceRadiance]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(IMG_OUT2, tex[Denoiser::kTraceRay]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glUseProgram(trace_.id());
+      classifier_.dispatch();
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    denoiser_.run(in, tex, p.denoise, divisor());
+    in.rebind();
+  }
+
+  // Tiles listed and rays cast by the last frame (stalls): tests and the speed report.
+  shared::TileListHeader last_counts() const { return classifier_.read_header(); }
+
+ private:
+  int divisor() const { return params_.half_resolution ? 2 : 1; }
+
+  TileClassifier classifier_;
+  Denoiser denoiser_;
+  gl::Program trace_;
+  gl::Texture2D blue_noise_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_stochastic_technique() { return std::make_unique<StochasticTechnique>(); }
+
+}  // namespace ssr
