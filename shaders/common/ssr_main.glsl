@@ -3,7 +3,10 @@
 // (with `RayOptions ray` as a member of XParams) and defines
 //   TraceResult trace_ray(ivec2 pixel, vec3 origin_vs, vec3 dir_vs, float jitter);
 // This file samples the reflection rays (GGX VNDF for rough pixels), averages the hits, applies
-// the shared fades and writes the reflection and debug images.
+// the shared fades and writes the reflection and debug images. Compiled with
+// SSR_DENOISE_OUTPUT (the tracer's `denoise` option) it writes the denoiser's inputs instead
+// (techniques/denoiser.h): premultiplied radiance at IMG_OUT and the first sample's ray (hit
+// vector, pdf) at IMG_OUT2, with samples that change every frame.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
@@ -11,6 +14,9 @@ layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;  // ste
 layout(binding = IMG_REFRACTION, rgba16f) uniform writeonly image2D out_refraction;
 layout(binding = TEX_GLASS_DEPTH) uniform sampler2D g_glass_depth;
 layout(binding = TEX_GLASS_SURFACE) uniform sampler2D g_glass_surface;
+#ifdef SSR_DENOISE_OUTPUT
+#include "common/denoise_common.glsl"
+#endif
 
 // Refraction (2012 blog): a transparent surface in front of this pixel refracts the view ray
 // with refract() instead of reflect() and traces it against the opaque depth buffer, which
@@ -46,13 +52,24 @@ void main() {
 
   vec3 radiance = vec3(0.0);
   float weight = 0.0, steps = 0.0, hits = 0.0, dist = 0.0;
+#ifdef SSR_DENOISE_OUTPUT
+  uint seed = uint(o.seed) ^ pcg_hash(uint(frame.counts.z));  // new samples every frame
+  vec4 first_ray = vec4(0.0);
+#else
+  uint seed = uint(o.seed);
+#endif
   for (int s = 0; s < n; ++s) {
     vec3 dir = reflect(-v, g.n_vs);
     if (!mirror) {
-      vec3 l = sample_reflection(g.n_vs, v, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(o.seed)));
+      vec3 l = sample_reflection(g.n_vs, v, rough, sample_xi(uint(p.x), uint(p.y), uint(s), seed));
       if (dot(l, g.n_vs) > 0.0) dir = l;  // under the horizon: fall back to the mirror ray
     }
-    TraceResult t = trace_ray(p, g.pos_vs, normalize(dir), pixel_jitter(p, s, o.seed));
+    TraceResult t = trace_ray(p, g.pos_vs, normalize(dir), pixel_jitter(p, s, int(seed)));
+#ifdef SSR_DENOISE_OUTPUT
+    if (s == 0)
+      first_ray = vec4(normalize(dir) * (t.hit ? t.distance : RAY_MISS_LENGTH),
+                       reflection_pdf(g.n_vs, v, normalize(dir), rough));
+#endif
     steps += t.steps;
     if (!t.hit) continue;
     float w = 1.0;
@@ -75,6 +92,12 @@ void main() {
   }
   // rgb: the weighted mean of what the hits saw; a: the share of the lobe they cover.
   vec3 rgb = weight > 0.0 ? radiance / weight : vec3(0.0);
-  imageStore(out_reflection, p, vec4(rgb, clamp(weight / float(n), 0.0, 1.0)));
+  float confidence = clamp(weight / float(n), 0.0, 1.0);
+#ifdef SSR_DENOISE_OUTPUT
+  imageStore(out_reflection, p, vec4(rgb * confidence, confidence));
+  imageStore(out_debug, p, first_ray);
+#else
+  imageStore(out_reflection, p, vec4(rgb, confidence));
   imageStore(out_debug, p, vec4(steps / float(n), hits / float(n), hits > 0.0 ? dist / hits : 0.0, 1.0));
+#endif
 }

@@ -1,7 +1,7 @@
 // Options every screen-space tracer shares (described once: src/techniques/ray_options.h adds
 // them to each technique's table). Each tracer's Params struct starts with `RayOptions ray;`.
 #pragma once
-#include "shared/interop.h"
+#include "shared/denoise.h"
 
 SSR_SHARED_BEGIN
 
@@ -14,6 +14,7 @@ struct RayOptions {
   int fresnel SSR_DEFAULT(0);                 // 1 (Roberts blend): weight *= Schlick Fresnel
   int blend SSR_DEFAULT(0);                   // 0: standard composite; 1: Roberts blend
   int seed SSR_DEFAULT(0);                    // random seed of the rough samples and jitter
+  DenoiseParams denoise;                      // enabled: the denoiser runs on the samples
 };
 
 SSR_SHARED_END

@@ -29,6 +29,24 @@ const std::vector<Preset>& presets() {
        {"linear-binary.linear_steps=500", "linear-binary.binary_steps=10",
         "linear-binary.thickness=0.1", "linear-binary.max_distance=9", "linear-binary.edge_fade=true"},
        "Roberts: 500 linear + 10 binary steps, edge fade"},
+      // Quality tiers of `stochastic` (rays, trace resolution, Hi-Z iterations, filter radius),
+      // in the spirit of FidelityFX SSSR's presets.
+      {"stochastic-low", "stochastic",
+       {"stochastic.half_resolution=true", "stochastic.max_iterations=64", "stochastic.roughness_threshold=0.5",
+        "stochastic.spatial_samples=4", "stochastic.spatial_radius=4", "stochastic.bilateral_radius=1"},
+       "half-resolution trace, 64 Hi-Z iterations, rays below roughness 0.5, 4 reused rays, 3x3 bilateral"},
+      {"stochastic-medium", "stochastic",
+       {"stochastic.rays_per_quad=1", "stochastic.max_iterations=128", "stochastic.roughness_threshold=0.6",
+        "stochastic.spatial_samples=6", "stochastic.spatial_radius=5", "stochastic.bilateral_radius=2"},
+       "full resolution, 2 rays per glossy quad, 128 iterations, rays below roughness 0.6, 6 reused rays"},
+      {"stochastic-high", "stochastic",
+       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=0.7", "stochastic.spatial_samples=8",
+        "stochastic.spatial_radius=6", "stochastic.bilateral_radius=2"},
+       "the defaults: a ray per pixel, auto iterations, rays below roughness 0.7, 8 reused rays"},
+      {"stochastic-ultra", "stochastic",
+       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=16",
+        "stochastic.spatial_radius=8", "stochastic.bilateral_radius=3", "stochastic.history=32"},
+       "a ray per pixel at every roughness, 16 reused rays, 7x7 bilateral, 32 frames of history"},
   };
   return list;
 }

@@ -7,6 +7,7 @@
 
 #include "shared/ray_options.h"
 #include "core/params.h"
+#include "techniques/denoiser.h"
 
 namespace ssr {
 
@@ -43,6 +44,7 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
                     {"standard", "roberts"}}, offsetof(R, blend)));
   t.push_back(at({"seed", ParamType::Int, 0, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."},
                  offsetof(R, seed)));
+  for (const ParamDesc& d : denoise_options(base + offsetof(R, denoise), /*with_switch=*/true)) t.push_back(d);
   return t;
 }
 

@@ -14,6 +14,7 @@
 #include "render/classification.h"
 #include "shared/stochastic.h"
 #include "techniques/denoiser.h"
+#include "techniques/stochastic.h"
 #include "techniques/technique.h"
 
 namespace ssr {
@@ -119,5 +120,9 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 }  // namespace
 
 std::unique_ptr<Technique> make_stochastic_technique() { return std::make_unique<StochasticTechnique>(); }
+
+shared::TileListHeader stochastic_tile_counts(const Technique& stochastic) {
+  return dynamic_cast<const StochasticTechnique&>(stochastic).last_counts();
+}
 
 }  // namespace ssr

@@ -5,6 +5,8 @@
 #include <functional>
 #include <string>
 
+#include "render/classification.h"
+#include "techniques/denoiser.h"
 #include "techniques/ray_options.h"
 #include "techniques/technique.h"
 
@@ -24,7 +26,12 @@ class TracerTechnique : public TechniqueWithParams<P> {
   TracerTechnique(std::string name, std::span<const ParamDesc> table, std::string shader, Resolver resolve = {})
       : TechniqueWithParams<P>(std::move(name), table), shader_(std::move(shader)), resolve_(std::move(resolve)) {}
 
-  void load(const gl::ShaderSource& src) override { program_ = gl::Program::compute(src, shader_); }
+  // The denoising variant (and the denoiser) compile on first use: most runs never need them.
+  void load(const gl::ShaderSource& src) override {
+    program_ = gl::Program::compute(src, shader_);
+    src_ = src;
+    denoise_loaded_ = false;
+  }
 
   // The parameters as this frame runs them: every "auto" resolved. The shared edge fade's auto
   // is on with the Roberts blend only (the standard composite already falls back to the
@@ -37,12 +44,35 @@ class TracerTechnique : public TechniqueWithParams<P> {
   }
 
   void run(const FrameContext& in) override {
-    gl::ScopedPass pass(in.timer, this->name());
     const P p = resolved({in.scene_diagonal,
                           static_cast<float>(std::hypot(double(in.width), double(in.height)))});
-    this->bind_params(&p);
-    glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    program_.dispatch_2d(in.width, in.height);
+    if (!p.ray.denoise.enabled) {
+      gl::ScopedPass pass(in.timer, this->name());
+      this->bind_params(&p);
+      glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      program_.dispatch_2d(in.width, in.height);
+      return;
+    }
+    // With the denoiser: every reflective pixel traces (the classes say which are), the trace
+    // writes the denoiser's inputs, the denoiser the reflection.
+    if (!denoise_loaded_) {
+      denoise_program_ = gl::Program::compute(src_, shader_, {"SSR_DENOISE_OUTPUT"});
+      classifier_.load(src_);
+      denoiser_.load(src_);
+      denoise_loaded_ = true;
+    }
+    const auto tex = std::span<gl::Texture2D* const>(in.textures);
+    classifier_.classify(*tex[Denoiser::kClass], {1.0f, 1.0f, 4, 1, {}}, in.time.index, in.timer);
+    {
+      gl::ScopedPass trace(in.timer, this->name());
+      this->bind_params(&p);
+      glBindImageTexture(IMG_OUT, tex[Denoiser::kTraceRadiance]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      glBindImageTexture(IMG_OUT2, tex[Denoiser::kTraceRay]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      denoise_program_.dispatch_2d(in.width, in.height);
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    denoiser_.run(in, tex, p.ray.denoise, 1);
+    in.rebind();
   }
 
   // Every tracer reads the G-buffer, the lit colour and the glass surfaces (it refracts), and
@@ -54,6 +84,14 @@ class TracerTechnique : public TechniqueWithParams<P> {
     d.writes_refraction = true;
     d.debug_views = {ViewMode::Steps, ViewMode::Hits, ViewMode::Distance};
     d.blend = this->params_.ray.blend;
+    if (this->params_.ray.denoise.enabled) {
+      // Its second image holds the rays then: the stage views replace the step views.
+      d.reads |= kReadMotion | kReadPrevDepth | kReadPrevNormal;
+      d.textures = Denoiser::textures(1);
+      d.stage_views = Denoiser::stage_views(0, this->params_.ray.denoise);
+      d.debug_views.clear();
+      for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
+    }
     return d;
   }
 
@@ -64,6 +102,11 @@ class TracerTechnique : public TechniqueWithParams<P> {
   std::string shader_;
   Resolver resolve_;
   gl::Program program_;
+  gl::ShaderSource src_;
+  bool denoise_loaded_ = false;
+  gl::Program denoise_program_;
+  TileClassifier classifier_;
+  Denoiser denoiser_;
 };
 
 }  // namespace ssr
