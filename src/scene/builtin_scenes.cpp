@@ -15,6 +15,11 @@
 //              on the mirror floor (ripples: concentric ripples from a few drops plus a faint
 //              sine swell, 4 m per repeat; tiles: 0.5 m bevelled square tiles, 2 m per repeat).
 //              The floor stays a planar reflector with the same rectangle(s).
+//            floor_roughness=R, R a number in [0, 1] (default 0): the perceptual roughness of
+//              the floor (every floor tile when reflectors > 1; the wall mirrors stay mirrors).
+//              The PPR thesis's charts 5 and 6 (section 5.4, figures 31-37: a floor that is one
+//              planar reflector at roughness 0.2, 0.5, 1.0, with and without a normal map) are
+//              gallery:floor_roughness=0.2|0.5|1 and gallery:normal_map=tiles,floor_roughness=...
 // cornell  5 x 5 x 5 m box open at the front (+Z): red left, green right, white back and
 //          ceiling, glossy metal floor (roughness 0.3, no planar reflector), two white boxes.
 // corridor 4 m wide, 3.5 m high, 40 m long, near-mirror floor (planar reflector 1, roughness
@@ -40,6 +45,7 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -358,10 +364,12 @@ Image tiles_normal_map(int size, int per_side) {
 
 struct OptionSpec {
   std::string key;
-  int min = 0, max = 0;              // integer options: the allowed range
-  std::vector<std::string> choices;  // choice options; empty for an integer option
+  int min = 0, max = 0;              // integer and number options: the allowed range
+  std::vector<std::string> choices;  // choice options; empty for an integer or number option
   std::string default_value;
+  bool number = false;  // a real number in [min, max] (decimal, e.g. 0.25), not an integer
   std::string allowed() const {
+    if (number) return std::to_string(min) + ".0.." + std::to_string(max) + ".0";
     if (choices.empty()) return std::to_string(min) + ".." + std::to_string(max);
     std::string s;
     for (const std::string& c : choices) s += (s.empty() ? "" : "|") + c;
@@ -371,6 +379,16 @@ struct OptionSpec {
 
 // Every option a scene declares, by key, as validated text (defaults filled in).
 using Options = std::map<std::string, std::string>;
+
+// A decimal number as the whole of `text` (no sign but '-', no spaces; locale-independent), if
+// it is one and finite.
+std::optional<double> parse_number(std::string_view text) {
+  double v = 0.0;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(text.data(), last, v, std::chars_format::general);
+  if (text.empty() || ec != std::errc() || end != last || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
 
 std::string options_help(const std::vector<OptionSpec>& specs) {
   std::string s;
@@ -385,9 +403,12 @@ Scene gallery(const Options& opt) {
   b.s.name = "gallery";
   const int n_reflectors = std::stoi(opt.at("reflectors"));
   const std::string& normal_map = opt.at("normal_map");
+  // + 0.0f: "-0" gives roughness +0.
+  const float floor_roughness = static_cast<float>(*parse_number(opt.at("floor_roughness"))) + 0.0f;
 
-  // Floor: x in [-16, 16], z in [-7, 10], y = 0; a perfect mirror and planar reflector 1.
-  Material mirror_floor = mat("mirror_floor", glm::vec3(0.9f), 0.0f, 1.0f, 1.0f);
+  // Floor: x in [-16, 16], z in [-7, 10], y = 0; planar reflector 1, metallic; a perfect mirror
+  // (roughness 0) unless floor_roughness says otherwise.
+  Material mirror_floor = mat("mirror_floor", glm::vec3(0.9f), floor_roughness, 1.0f, 1.0f);
   float normal_period = 1.0f;  // metres of floor per repeat of the normal map
   if (normal_map != "none") {
     normal_period = normal_map == "ripples" ? 4.0f : 2.0f;
@@ -961,7 +982,7 @@ Scene hard_depth_range() {
 // The gallery moved 1e4 m along +X and -Z (camera, lights, reflectors too): world-space
 // positions lose about 3 decimal digits of float precision.
 Scene hard_far_origin() {
-  Options opt{{"reflectors", "1"}, {"normal_map", "none"}};
+  Options opt{{"reflectors", "1"}, {"normal_map", "none"}, {"floor_roughness", "0"}};
   Scene s = gallery(opt);
   s.name = "hard-far-origin";
   const glm::vec3 o(1.0e4f, 0.0f, -1.0e4f);
@@ -1122,9 +1143,11 @@ const std::vector<Entry>& entries() {
       {{"gallery",
         "mirror floor (planar reflector) with coloured boxes, spheres, columns, a brick wall and "
         "a red marker sphere; options gallery:reflectors=1..16 (floor tiles plus wall mirrors), "
-        "normal_map=ripples|tiles|none (e.g. gallery:reflectors=5,normal_map=tiles)"},
+        "normal_map=ripples|tiles|none, floor_roughness=0.0..1.0 (default 0: a mirror) (e.g. "
+        "gallery:reflectors=5,normal_map=tiles or gallery:floor_roughness=0.5)"},
        {{"reflectors", 1, Scene::kMaxReflectors, {}, "1"},
         {"normal_map", 0, 0, {"ripples", "tiles", "none"}, "none"},
+        {"floor_roughness", 0, 1, {}, "0", /*number=*/true},
         path_option({"dolly", "orbit", "pan", "slide", "enter", "cut"})},
        &gallery},
       {{"cornell",
@@ -1224,7 +1247,14 @@ Options parse_options(const Entry& e, const std::string& full, std::string_view 
     if (given.count(key))
       throw InputError("option '" + key + "' is given twice in '" + full + "' (allowed: " + key +
                        "=" + spec->allowed() + ")");
-    if (spec->choices.empty()) {
+    if (spec->number) {
+      const std::optional<double> v = parse_number(value);
+      if (!v || *v < spec->min || *v > spec->max)
+        throw InputError("option '" + key + "' of built-in scene '" + name + "' must be a number in [" +
+                         std::to_string(spec->min) + ", " + std::to_string(spec->max) +
+                         "] (e.g. 0.5), not '" + value + "'");
+      given[key] = value;
+    } else if (spec->choices.empty()) {
       int v = 0;
       const char* first = value.data();
       const char* last = value.data() + value.size();

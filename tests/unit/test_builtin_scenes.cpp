@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/errors.h"
+#include "input_error.h"
 #include "scene/builtin_scenes.h"
 #include "scene/scene_io.h"
 
@@ -684,4 +685,80 @@ TEST(BuiltinHardScenes, EveryHardSceneValidatesAndKeepsItsPromise) {
     EXPECT_EQ(edge_on, 2);
     EXPECT_EQ(behind, 1);
   }
+}
+
+// ---- gallery:floor_roughness=R (the PPR thesis's charts 5 and 6: roughness 0.2, 0.5, 1.0) ----------
+
+TEST(BuiltinSceneOptions, GalleryFloorRoughnessSetsTheMirrorFloorsRoughness) {
+  struct Case {
+    const char* value;
+    float roughness;
+  };
+  for (const Case c : {Case{"0", 0.0f}, Case{"0.2", 0.2f}, Case{"0.5", 0.5f}, Case{"1", 1.0f},
+                       Case{"1.0", 1.0f}, Case{"0.25", 0.25f}, Case{".5", 0.5f}, Case{"-0", 0.0f},
+                       Case{"5e-1", 0.5f}}) {
+    const std::string name = std::string("gallery:floor_roughness=") + c.value;
+    SCOPED_TRACE(name);
+    const Scene s = ssr::make_builtin_scene(name);
+    EXPECT_EQ(s.name, name);
+    const Mesh* floor = find_mesh(s, "floor");
+    ASSERT_NE(floor, nullptr);
+    EXPECT_EQ(floor->reflector, 1);
+    const ssr::Material& m = s.materials.at(static_cast<std::size_t>(floor->material));
+    EXPECT_EQ(m.roughness, c.roughness);
+    EXPECT_FALSE(std::signbit(m.roughness));
+    EXPECT_EQ(m.metallic, 1.0f);
+  }
+  // The default is today's mirror; other materials are untouched.
+  const Scene plain = ssr::make_builtin_scene("gallery");
+  const Scene rough = ssr::make_builtin_scene("gallery:floor_roughness=0.5");
+  EXPECT_EQ(plain.materials.at(static_cast<std::size_t>(find_mesh(plain, "floor")->material)).roughness, 0.0f);
+  ASSERT_EQ(plain.materials.size(), rough.materials.size());
+  for (std::size_t i = 0; i < plain.materials.size(); ++i)
+    if (plain.materials[i].name != "mirror_floor")
+      EXPECT_EQ(plain.materials[i].roughness, rough.materials[i].roughness) << plain.materials[i].name;
+  // With tiles and wall mirrors: every floor tile gets it, the wall mirrors stay mirrors; it
+  // combines with the normal map.
+  const Scene tiles = ssr::make_builtin_scene("gallery:reflectors=5,floor_roughness=1,normal_map=tiles");
+  int n_tiles = 0;
+  for (const Mesh& m : tiles.meshes) {
+    const ssr::Material& mat = tiles.materials.at(static_cast<std::size_t>(m.material));
+    if (m.name.rfind("floor_tile_", 0) == 0) {
+      ++n_tiles;
+      EXPECT_EQ(mat.roughness, 1.0f) << m.name;
+      EXPECT_GE(mat.normal_texture, 0) << m.name;
+    } else if (m.name.rfind("mirror_", 0) == 0 && m.reflector) {
+      EXPECT_EQ(mat.roughness, 0.0f) << m.name;
+    }
+  }
+  EXPECT_EQ(n_tiles, 3);
+  // hard-far-origin (the gallery moved) keeps the mirror floor.
+  const Scene far = ssr::make_builtin_scene("hard-far-origin");
+  EXPECT_EQ(far.materials.at(static_cast<std::size_t>(find_mesh(far, "floor")->material)).roughness, 0.0f);
+}
+
+TEST(BuiltinSceneOptions, GalleryFloorRoughnessRejectsWhatIsNotANumberInZeroToOne) {
+  for (const char* bad : {"1.5", "-0.1", "2", "abc", "", "0.5x", " 0.5", "0.5 ", "+0.5", "nan",
+                          "inf", "-inf", "1e3", "0,5", "0x1p-1", "1.0000001"}) {
+    const std::string name = std::string("gallery:floor_roughness=") + bad;
+    SCOPED_TRACE(name);
+    try {
+      ssr::make_builtin_scene(name);
+      ADD_FAILURE() << "no exception";
+    } catch (const ssr::InputError& e) {
+      const std::string msg = e.what();
+      // "0,5" is split at the comma: "5" is then an option without a key.
+      if (std::string(bad) == "0,5") continue;
+      for (const std::string w : {std::string("'floor_roughness'"), std::string("a number in [0, 1]"),
+                                  "'" + std::string(bad) + "'"})
+        EXPECT_NE(msg.find(w), std::string::npos) << msg;
+      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    }
+  }
+  EXPECT_THROW(ssr::load_scene("gallery:floor_roughness=1.5"), ssr::InputError);
+  EXPECT_THROW(ssr::make_builtin_scene("gallery:floor_roughness=0.2,floor_roughness=0.5"), ssr::InputError);
+  // The help lists it, with its range.
+  const std::string msg = ssr::test::input_error([] { ssr::make_builtin_scene("gallery:foo=1"); });
+  EXPECT_NE(msg.find("floor_roughness=0.0..1.0"), std::string::npos) << msg;
+  EXPECT_NE(ssr::builtin_scenes().front().description.find("floor_roughness="), std::string::npos);
 }
