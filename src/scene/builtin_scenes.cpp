@@ -24,6 +24,14 @@
 //          ceiling, glossy metal floor (roughness 0.3, no planar reflector), two white boxes.
 // corridor 4 m wide, 3.5 m high, 40 m long, near-mirror floor (planar reflector 1, roughness
 //          0.05), pillars and coloured panels along both walls, 8 ceiling lights.
+// ramp     the roughness ramp (issue 14): a metal floor (metallic 1, albedo 0.9) in 11 bands of
+//          perceptual roughness 0.0, 0.1, ..., 1.0, 0.7 m wide and 14 m long, side by side left
+//          to right and running along the view, each its own mesh "band_0.0" .. "band_1.0" and
+//          planar reflector: band k (roughness k/10) is reflector k + 1, so the breakdown's
+//          "reflector:N" is the band of roughness (N - 1)/10. On it stand tall boxes and columns
+//          (back row) and spheres and cubes (front row), one object per band, each its own
+//          colour, with a glowing sphere on band_0.5; behind, a 12 m brick wall with a glowing
+//          strip across it. Nothing but the bands is reflective. No moving objects.
 // hard-*   stability scenes (issue 7): hard-grazing, hard-mirror-box, hard-thin,
 //          hard-depth-range, hard-far-origin, hard-degenerate, hard-roughness, hard-reflectors;
 //          described above their builders and in docs/ROBUSTNESS.md.
@@ -43,6 +51,7 @@
 #include <cmath>
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -800,6 +809,127 @@ Scene glass() {
   return b.s;
 }
 
+// ---- ramp ---------------------------------------------------------------------------------------
+// The roughness ramp (issue 14): a metal floor in 11 bands of perceptual roughness 0.0, 0.1, ...,
+// 1.0, each its own mesh ("band_0.0" ... "band_1.0") and planar reflector (id k + 1 for the band
+// of roughness k / 10), so every per-reflector figure ("reflector:N") is a per-roughness figure.
+// The bands run along the view, side by side, left (0.0) to right (1.0): each spans the floor's
+// whole depth, so every band sees the same mix of near and far floor, of reflections on screen
+// and off it; only the roughness (and what stands above it) differs. Bands across the view would
+// give the near bands nothing on screen to reflect and the far ones only grazing angles.
+constexpr int kRampBands = 11;
+constexpr float kRampBandWidth = 0.7f;  // metres along x; the floor is 7.7 m wide
+
+float ramp_band_x(int k) { return (static_cast<float>(k) - 5.0f) * kRampBandWidth; }  // centre
+
+Scene ramp() {
+  Builder b;
+  b.s.name = "ramp";
+  // Bands: x in [-3.85, 3.85] (band k over [ramp_band_x(k) -+ 0.35]), z in [-8, 6], y = 0; metal
+  // (albedo 0.9, metallic 1), no gaps. Roughness k / 10.0f: the float nearest k / 10, as the
+  // literals 0.1f, 0.2f, ... are.
+  for (int k = 0; k < kRampBands; ++k) {
+    const float r = static_cast<float>(k) / 10.0f;
+    char label[8];
+    std::snprintf(label, sizeof label, "%.1f", static_cast<double>(r));
+    const int m = b.material(mat(std::string("metal_r") + label, glm::vec3(0.9f), r, 1.0f, 1.0f));
+    const glm::vec3 c(ramp_band_x(k), 0.0f, -1.0f);
+    const int refl = b.floor_reflector(c, {0.5f * kRampBandWidth, 7.0f});
+    b.mesh(meshgen::plane({kRampBandWidth, 14.0f}), std::string("band_") + label, m, translate(c),
+           refl);
+  }
+  // A matte, non-reflective surround 1 cm below the bands (what the frame shows beside them).
+  b.mesh(meshgen::plane({32.0f, 16.0f}), "surround",
+         b.material(mat("surround", {0.22f, 0.22f, 0.24f}, 0.9f)), translate({0, -0.01f, 0.0f}));
+
+  // Back wall: z = -8, facing +Z, x in [-16, 16], y in [0, 12]; grey-blue bricks, 2 m per tile;
+  // taller than the frame, so most rough lobes end on it rather than on the bright sky. An
+  // emissive strip runs across its whole width at 2 m: every band reflects it, blurred by its
+  // roughness.
+  const int brick_img = b.image(bricks(256, 8, 4, {0.62f, 0.60f, 0.66f}, {0.80f, 0.79f, 0.76f}, 31U));
+  Material wall = mat("brick_wall", glm::vec3(1.0f), 0.85f);
+  wall.albedo_texture = brick_img;
+  Mesh back = meshgen::plane({32.0f, 12.0f});
+  scale_uv(back, {16.0f, 6.0f});
+  b.mesh(std::move(back), "back_wall", b.material(wall), translate({0, 6.0f, -8.0f}) * rotate_x(90.0f));
+  b.mesh(meshgen::box({32.0f, 0.3f, 0.05f}), "light_strip",
+         b.material(mat("light_strip", glm::vec3(1.0f), 0.5f, 0.0f, 0.5f, {2.6f, 3.0f, 3.6f})),
+         translate({0.0f, 2.0f, -7.97f}));
+
+  // Objects, each standing on the middle of one band (non-metallic: the bands are the only
+  // reflective surfaces). A back row at z = -5 on the even bands (tall boxes and columns) and a
+  // front row at z = -1.5 on the odd bands (spheres, cubes and the bright "glow" sphere),
+  // every object its own colour. A mirror image keeps its object's screen x and falls on the
+  // floor in front of it, on its band and the next ones towards the middle of the frame.
+  const int orange = b.material(mat("orange", {0.95f, 0.45f, 0.10f}, 0.5f));
+  const int green = b.material(mat("green", {0.15f, 0.65f, 0.25f}, 0.5f));
+  const int marble = b.material(mat("marble", {0.85f, 0.82f, 0.76f}, 0.35f));
+  const int blue = b.material(mat("blue", {0.15f, 0.30f, 0.85f}, 0.45f));
+  const int magenta = b.material(mat("magenta", {0.85f, 0.20f, 0.70f}, 0.5f));
+  const int yellow = b.material(mat("yellow", {0.90f, 0.75f, 0.20f}, 0.6f));
+  const int teal = b.material(mat("teal", {0.10f, 0.60f, 0.60f}, 0.5f));
+  const int purple = b.material(mat("purple", {0.50f, 0.25f, 0.80f}, 0.5f));
+  const int red = b.material(mat("red", {0.80f, 0.10f, 0.08f}, 0.5f));
+  const int lime = b.material(mat("lime", {0.60f, 0.85f, 0.15f}, 0.5f));
+  const int glow =
+      b.material(mat("glow", {1.0f, 0.9f, 0.7f}, 0.5f, 0.0f, 0.5f, {5.0f, 4.2f, 2.6f}));
+  constexpr float zb = -5.0f, za = -1.5f;
+  b.mesh(meshgen::cylinder(0.25f, 2.6f), "column_orange", orange, translate({ramp_band_x(0), 0.0f, zb}));
+  b.mesh(meshgen::box({0.5f, 1.8f, 0.5f}), "box_tall_green", green,
+         translate({ramp_band_x(2), 0.9f, zb}) * rotate_y(20.0f));
+  b.mesh(meshgen::cylinder(0.22f, 3.0f), "column_white", marble, translate({ramp_band_x(4), 0.0f, zb}));
+  b.mesh(meshgen::box({0.5f, 2.2f, 0.5f}), "box_tall_blue", blue,
+         translate({ramp_band_x(6), 1.1f, zb}) * rotate_y(-25.0f));
+  b.mesh(meshgen::cylinder(0.25f, 2.0f), "column_magenta", magenta, translate({ramp_band_x(8), 0.0f, zb}));
+  b.mesh(meshgen::box({0.5f, 2.6f, 0.5f}), "box_tall_yellow", yellow,
+         translate({ramp_band_x(10), 1.3f, zb}) * rotate_y(15.0f));
+  b.mesh(meshgen::sphere(0.3f, 32, 16), "sphere_teal", teal, translate({ramp_band_x(1), 0.3f, za}));
+  b.mesh(meshgen::box({0.5f, 0.5f, 0.5f}), "cube_purple", purple,
+         translate({ramp_band_x(3), 0.25f, za}) * rotate_y(30.0f));
+  b.mesh(meshgen::sphere(0.3f, 32, 16), "glow", glow, translate({ramp_band_x(5), 0.3f, za}));
+  b.mesh(meshgen::box({0.5f, 0.5f, 0.5f}), "cube_red", red,
+         translate({ramp_band_x(7), 0.25f, za}) * rotate_y(-20.0f));
+  b.mesh(meshgen::sphere(0.3f, 32, 16), "sphere_lime", lime, translate({ramp_band_x(9), 0.3f, za}));
+
+  // Lights: white key above the objects, warm left and cool right beside the wall, a weak fill
+  // before the front row. Weak lights and ambient 1 (the sky's diffuse light, which the metal
+  // bands do not get): the wall and the objects stay bright while the point lights' highlights
+  // on the rough bands stay dim, so the bands show mostly their reflections.
+  b.light({0.0f, 6.0f, -3.0f}, glm::vec3(1.0f), 15.0f, 25.0f);
+  b.light({-6.0f, 4.0f, -5.0f}, {1.0f, 0.8f, 0.6f}, 12.0f, 20.0f);
+  b.light({6.0f, 4.0f, -5.0f}, {0.6f, 0.75f, 1.0f}, 12.0f, 20.0f);
+  b.light({0.0f, 3.0f, 2.0f}, glm::vec3(1.0f), 4.0f, 12.0f);
+
+  // Default camera: eye 1.7 m, 1 m behind the bands' near end, 5.1 deg down, looking along the
+  // bands. At 16:9 each band runs from the bottom edge to the wall's foot (NDC y = -0.04, where
+  // the bands span NDC x in [-0.25, 0.25]); the outer two leave the frame at the bottom corners.
+  // The bands fill ~37% of the frame: ~2% each for the outer two, 3.2-3.7% for the others, of
+  // which 85-97% reflect, as a mirror, something that is itself on screen (tests/unit counts).
+  // The front row stands at NDC y ~ -0.19, the strip's mirror image crosses every band at
+  // NDC y ~ -0.27; the wall runs off the top edge (no sky in view).
+  b.camera("default", {0.0f, 1.7f, 7.0f}, {0.0f, 0.8f, -3.0f});
+  b.camera("low", {0.0f, 0.4f, 7.0f}, {0.0f, 0.5f, -3.0f});    // grazing
+  b.camera("high", {0.0f, 6.0f, 8.0f}, {0.0f, 0.0f, -2.0f});   // steep look down on the ramp
+  b.camera("side", {6.0f, 2.0f, 4.0f}, {-1.0f, 0.5f, -3.0f});  // oblique, from the right
+
+  const Camera& cam = b.s.cameras[0];
+  b.path("dolly", "camera dolly: 4 m in along the default view, over the front row (4 s)",
+         {key(0, cam), key(4, cam.position + 0.4f * (cam.target - cam.position), cam.target)});
+  b.path("orbit",
+         "slow camera orbit: swings 20 deg to either side of the default view about the vertical "
+         "axis through its target, the bands turning across the frame (6 s)",
+         orbit_keys(cam, cam.target, 6.0f, 0.25f,
+                    [](float t) { return 20.0f * std::sin(std::numbers::pi_v<float> * t / 3.0f); }));
+  b.path("pan",
+         "slow pan: from the default position turns 10 deg left, 20 deg right and back (6 s)",
+         pan_keys(cam, {{0.0f, 0.0f}, {1.5f, 10.0f}, {4.5f, -10.0f}, {6.0f, 0.0f}}));
+  b.s.animation.duration = 6.0f;
+
+  b.s.environment.type = Environment::Type::Sky;
+  b.s.ambient = 1.0f;
+  return b.s;
+}
+
 // ---- hard cases ---------------------------------------------------------------------------------
 // Stability scenes for issue 7 (tests/gl/test_hard_cases.cpp runs every technique on each one's
 // default camera against the reference; docs/ROBUSTNESS.md lists what each exercises). Every one
@@ -1163,6 +1293,12 @@ const std::vector<Entry>& entries() {
       {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
        {path_option({"orbit"})},
        [](const Options&) { return glass(); }},
+      {{"ramp",
+        "roughness ramp: a metal floor in 11 bands of roughness 0.0, 0.1, ..., 1.0 side by side "
+        "(band_0.0 .. band_1.0, planar reflectors 1..11: reflector:N is roughness (N-1)/10), "
+        "coloured boxes, spheres and columns on it, a glowing sphere and strip, a brick wall"},
+       {path_option({"dolly", "orbit", "pan"})},
+       [](const Options&) { return ramp(); }},
       // Hard cases (issue 7): see the comments above each builder and docs/ROBUSTNESS.md.
       {{"hard-grazing", "hard case: camera 5 cm above a 400 m mirror floor, looking along it"},
        {path_option({"dolly"})},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -95,19 +96,20 @@ void check_reflector_meshes(const Scene& s) {
 
 TEST(BuiltinScenes, ListsTheScenesWithGalleryFirst) {
   const auto& list = ssr::builtin_scenes();
-  ASSERT_EQ(list.size(), 12u);
+  ASSERT_EQ(list.size(), 13u);
   EXPECT_EQ(list[0].name, "gallery");
   EXPECT_EQ(list[1].name, "cornell");
   EXPECT_EQ(list[2].name, "corridor");
   EXPECT_EQ(list[3].name, "glass");
-  EXPECT_EQ(list[4].name, "hard-grazing");
-  EXPECT_EQ(list[5].name, "hard-mirror-box");
-  EXPECT_EQ(list[6].name, "hard-thin");
-  EXPECT_EQ(list[7].name, "hard-depth-range");
-  EXPECT_EQ(list[8].name, "hard-far-origin");
-  EXPECT_EQ(list[9].name, "hard-degenerate");
-  EXPECT_EQ(list[10].name, "hard-roughness");
-  EXPECT_EQ(list[11].name, "hard-reflectors");
+  EXPECT_EQ(list[4].name, "ramp");
+  EXPECT_EQ(list[5].name, "hard-grazing");
+  EXPECT_EQ(list[6].name, "hard-mirror-box");
+  EXPECT_EQ(list[7].name, "hard-thin");
+  EXPECT_EQ(list[8].name, "hard-depth-range");
+  EXPECT_EQ(list[9].name, "hard-far-origin");
+  EXPECT_EQ(list[10].name, "hard-degenerate");
+  EXPECT_EQ(list[11].name, "hard-roughness");
+  EXPECT_EQ(list[12].name, "hard-reflectors");
   for (const auto& info : list) EXPECT_FALSE(info.description.empty()) << info.name;
 }
 
@@ -244,7 +246,8 @@ TEST(BuiltinScenes, GalleryMarkerAndItsReflectionAreInViewAndUnoccluded) {
 }
 
 TEST(BuiltinScenes, DefaultCamerasSeeTheReflectiveFloor) {
-  // The ray through the lower middle of the frame (NDC (0, -0.6)) hits the floor mesh first.
+  // The ray through the lower middle of the frame (NDC (0, -0.6)) hits the floor mesh first
+  // (the ramp's floor is its bands, "band_0.0" .. "band_1.0", all at y = 0).
   for (const auto& info : ssr::builtin_scenes()) {
     SCOPED_TRACE(info.name);
     const Scene s = ssr::make_builtin_scene(info.name);
@@ -258,12 +261,19 @@ TEST(BuiltinScenes, DefaultCamerasSeeTheReflectiveFloor) {
     const glm::vec3 dir = glm::normalize(glm::vec3(glm::dvec3(far_h) / far_h.w - glm::dvec3(cam.position)));
     ASSERT_LT(dir.y, 0.0f);
     const glm::vec3 hit = cam.position + dir * (cam.position.y / -dir.y);
-    const Mesh* floor = find_mesh(s, "floor");
-    ASSERT_NE(floor, nullptr);
-    glm::vec3 lo, hi;
-    bounds(*floor, lo, hi);
+    std::set<std::string> floor_names;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const Mesh& m : s.meshes) {
+      if (m.name != "floor" && m.name.rfind("band_", 0) != 0) continue;
+      floor_names.insert(m.name);
+      glm::vec3 a, b;
+      bounds(m, a, b);
+      lo = glm::min(lo, a);
+      hi = glm::max(hi, b);
+    }
+    ASSERT_FALSE(floor_names.empty());
     EXPECT_TRUE(hit.x > lo.x && hit.x < hi.x && hit.z > lo.z && hit.z < hi.z);
-    EXPECT_FALSE(segment_blocked(s, cam.position, hit, {"floor"}));
+    EXPECT_FALSE(segment_blocked(s, cam.position, hit, floor_names));
   }
 }
 
@@ -685,6 +695,224 @@ TEST(BuiltinHardScenes, EveryHardSceneValidatesAndKeepsItsPromise) {
     EXPECT_EQ(edge_on, 2);
     EXPECT_EQ(behind, 1);
   }
+}
+
+// ---- the roughness ramp (issue 14) ----------------------------------------------------------------
+
+namespace {
+
+// The band names, left to right, as the header comment and assets/scenes/README.md document them.
+const std::vector<std::string> kRampBands = {"band_0.0", "band_0.1", "band_0.2", "band_0.3",
+                                             "band_0.4", "band_0.5", "band_0.6", "band_0.7",
+                                             "band_0.8", "band_0.9", "band_1.0"};
+const float kRampRoughness[] = {0.0f, 0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f, 1.0f};
+
+// The first triangle the ray origin + t dir (0 < t < t_max) hits: its mesh index, or -1.
+int closest_hit(const Scene& s, glm::vec3 origin, glm::vec3 dir, float t_max, float& t_hit) {
+  int best = -1;
+  t_hit = t_max;
+  for (std::size_t k = 0; k < s.meshes.size(); ++k) {
+    const Mesh& m = s.meshes[k];
+    for (std::size_t i = 0; i < m.indices.size(); i += 3) {
+      const glm::vec3 p0 = m.vertices[m.indices[i]].position;
+      const glm::vec3 e1 = m.vertices[m.indices[i + 1]].position - p0;
+      const glm::vec3 e2 = m.vertices[m.indices[i + 2]].position - p0;
+      const glm::vec3 pv = glm::cross(dir, e2);
+      const float det = glm::dot(e1, pv);
+      if (std::abs(det) < 1e-12f) continue;
+      const glm::vec3 tv = origin - p0;
+      const float u = glm::dot(tv, pv) / det;
+      if (u < 0.0f || u > 1.0f) continue;
+      const glm::vec3 qv = glm::cross(tv, e1);
+      const float v = glm::dot(dir, qv) / det;
+      if (v < 0.0f || u + v > 1.0f) continue;
+      const float t = glm::dot(e2, qv) / det;
+      if (t > 1e-4f && t < t_hit) {
+        t_hit = t;
+        best = static_cast<int>(k);
+      }
+    }
+  }
+  return best;
+}
+
+// What the default camera sees of each band on a `w` x `h` grid of pixel centres at 16:9:
+// pixels whose first hit is the band, and of those, pixels whose mirror ray (the view ray
+// reflected about +Y) first hits something that is itself in the frame and seen by the camera
+// there (a reflection a screen-space method can find), and the meshes those rays hit.
+struct BandView {
+  int pixels = 0, traceable = 0;
+  std::set<std::string> reflected;
+};
+std::vector<BandView> ramp_band_views(const Scene& s, int w, int h) {
+  const ssr::Camera& cam = s.cameras[0];
+  const glm::mat4 inv = glm::inverse(
+      glm::perspective(glm::radians(cam.fov_y_deg), 16.0f / 9.0f, cam.near_plane, cam.far_plane) *
+      glm::lookAt(cam.position, cam.target, cam.up));
+  std::vector<BandView> views(kRampBands.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const glm::vec2 ndc(-1.0f + 2.0f * (static_cast<float>(x) + 0.5f) / static_cast<float>(w),
+                          -1.0f + 2.0f * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
+      const glm::vec4 far_h = inv * glm::vec4(ndc, 1.0f, 1.0f);
+      const glm::vec3 dir = glm::normalize(glm::vec3(far_h) / far_h.w - cam.position);
+      float t = 0.0f;
+      const int m = closest_hit(s, cam.position, dir, 1000.0f, t);
+      if (m < 0) continue;
+      const auto band = std::find(kRampBands.begin(), kRampBands.end(), s.meshes[static_cast<std::size_t>(m)].name);
+      if (band == kRampBands.end()) continue;
+      BandView& v = views[static_cast<std::size_t>(band - kRampBands.begin())];
+      ++v.pixels;
+      const glm::vec3 p = cam.position + t * dir;
+      const glm::vec3 r(dir.x, -dir.y, dir.z);
+      float tr = 0.0f;
+      const int hit = closest_hit(s, p, r, 1000.0f, tr);
+      if (hit < 0) continue;  // the sky
+      const glm::vec3 q = p + tr * r;
+      const auto q_ndc = to_ndc(cam, q);
+      if (!q_ndc || std::abs(q_ndc->x) >= 1.0f || std::abs(q_ndc->y) >= 1.0f) continue;  // off screen
+      float tq = 0.0f;
+      const glm::vec3 to_q = q - cam.position;
+      if (closest_hit(s, cam.position, glm::normalize(to_q), 1000.0f, tq) != hit ||
+          std::abs(tq - glm::length(to_q)) > 0.02f)
+        continue;  // hidden from the camera
+      ++v.traceable;
+      v.reflected.insert(s.meshes[static_cast<std::size_t>(hit)].name);
+    }
+  return views;
+}
+
+}  // namespace
+
+TEST(BuiltinRamp, ElevenBandsOfRoughnessZeroToOneLeftToRightWithReflectorIds1To11) {
+  const Scene s = ssr::make_builtin_scene("ramp");
+  EXPECT_NO_THROW(ssr::validate(s));
+  ASSERT_EQ(s.reflectors.size(), 11u);
+  check_reflector_meshes(s);
+  float prev_hi_x = -1e30f;
+  for (std::size_t k = 0; k < kRampBands.size(); ++k) {
+    SCOPED_TRACE(kRampBands[k]);
+    const Mesh* band = find_mesh(s, kRampBands[k]);
+    ASSERT_NE(band, nullptr);
+    EXPECT_EQ(band->reflector, static_cast<int>(k) + 1);  // reflector:N is band N - 1
+    const ssr::Material& m = s.materials.at(static_cast<std::size_t>(band->material));
+    EXPECT_EQ(m.roughness, kRampRoughness[k]);  // exactly, as the literal
+    EXPECT_EQ(m.metallic, 1.0f);
+    EXPECT_GE(std::min({m.albedo.x, m.albedo.y, m.albedo.z}), 0.8f);  // light grey metal
+    EXPECT_LT(glm::length(m.emission), 1e-6f);
+    EXPECT_EQ(m.normal_texture, -1);
+    // Flat at y = 0, facing up; the reflector rectangle is exactly the band.
+    const ssr::Reflector& r = s.reflectors[k];
+    EXPECT_NEAR(glm::dot(r.normal(), glm::vec3(0, 1, 0)), 1.0f, 1e-6f);
+    EXPECT_NEAR(r.center.y, 0.0f, 1e-6f);
+    glm::vec3 lo, hi;
+    bounds(*band, lo, hi);
+    EXPECT_NEAR(lo.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(hi.y, 0.0f, 1e-6f);
+    EXPECT_NEAR(hi.x - lo.x, 2.0f * r.half_extents.x, 1e-4f);
+    EXPECT_NEAR(hi.z - lo.z, 2.0f * r.half_extents.y, 1e-4f);
+    // Side by side along x, left to right in roughness order, touching, running along the view
+    // (much longer in z than wide).
+    if (k > 0) EXPECT_NEAR(lo.x, prev_hi_x, 1e-4f);
+    prev_hi_x = hi.x;
+    EXPECT_GT(hi.z - lo.z, 10.0f * (hi.x - lo.x));
+  }
+  // The bands are the only reflective surfaces: every other mesh is non-metallic, not a
+  // reflector, F0 = 0.16 r^2 well below the G-buffer's 0.1 threshold.
+  for (const Mesh& m : s.meshes) {
+    if (std::find(kRampBands.begin(), kRampBands.end(), m.name) != kRampBands.end()) continue;
+    SCOPED_TRACE(m.name);
+    EXPECT_EQ(m.reflector, 0);
+    const ssr::Material& mat = s.materials.at(static_cast<std::size_t>(m.material));
+    EXPECT_EQ(mat.metallic, 0.0f);
+    EXPECT_LT(0.16f * mat.reflectance * mat.reflectance, 0.05f);
+    EXPECT_FALSE(mat.transparent);
+  }
+}
+
+TEST(BuiltinRamp, RoughnessGrowsWithTheBandsXAndTheirReflectorIds) {
+  // Sorting the bands by their x (left to right on screen) or by reflector id gives roughness
+  // 0.0, 0.1, ..., 1.0 in that order: a swapped pair anywhere fails here.
+  const Scene s = ssr::make_builtin_scene("ramp");
+  std::vector<std::pair<float, float>> by_x;   // (centre x, roughness)
+  std::vector<std::pair<int, float>> by_id;    // (reflector id, roughness)
+  std::vector<std::pair<std::string, float>> by_name;
+  for (const Mesh& m : s.meshes) {
+    if (m.reflector == 0) continue;
+    glm::vec3 lo, hi;
+    bounds(m, lo, hi);
+    const float r = s.materials.at(static_cast<std::size_t>(m.material)).roughness;
+    by_x.emplace_back(0.5f * (lo.x + hi.x), r);
+    by_id.emplace_back(m.reflector, r);
+    by_name.emplace_back(m.name, r);
+  }
+  ASSERT_EQ(by_x.size(), 11u);
+  std::sort(by_x.begin(), by_x.end());
+  std::sort(by_id.begin(), by_id.end());
+  for (std::size_t k = 0; k < 11; ++k) {
+    EXPECT_EQ(by_x[k].second, kRampRoughness[k]) << "band " << k << " from the left";
+    EXPECT_EQ(by_id[k].first, static_cast<int>(k) + 1);
+    EXPECT_EQ(by_id[k].second, kRampRoughness[k]) << "reflector " << k + 1;
+  }
+  // The name says the roughness: "band_0.3" has roughness 0.3.
+  for (const auto& [name, r] : by_name) EXPECT_EQ(std::stof(name.substr(5)), r) << name;
+  // The material names say it too, and every band has its own material.
+  std::set<int> materials;
+  for (const Mesh& m : s.meshes)
+    if (m.reflector) EXPECT_TRUE(materials.insert(m.material).second) << m.name;
+}
+
+TEST(BuiltinRamp, EveryBandCoversAShareOfTheDefaultViewAndReflectsSomething) {
+  const Scene s = ssr::make_builtin_scene("ramp");
+  constexpr int w = 192, h = 108;
+  const std::vector<BandView> views = ramp_band_views(s, w, h);
+  int total = 0;
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const BandView& v = views[k];
+    total += v.pixels;
+    const double share = 100.0 * v.pixels / (w * h);
+    const double traceable = v.pixels ? 100.0 * v.traceable / v.pixels : 0.0;
+    std::string what;
+    for (const std::string& n : v.reflected) what += (what.empty() ? "" : " ") + n;
+    std::printf("%s: %.1f%% of the frame, %.0f%% of it reflects something on screen: %s\n",
+                kRampBands[k].c_str(), share, traceable, what.c_str());
+    SCOPED_TRACE(kRampBands[k]);
+    EXPECT_GT(share, 1.5);
+    EXPECT_GT(traceable, 40.0);
+    // The wall and at least two objects standing on the floor are reflected in every band.
+    EXPECT_TRUE(v.reflected.count("back_wall"));
+    EXPECT_GE(v.reflected.size(), 3u);
+  }
+  EXPECT_GT(100.0 * total / (w * h), 35.0);  // the bands fill over a third of the frame
+  // The glowing strip on the wall is reflected in every band (the same bright line, blurred
+  // more and more from left to right).
+  for (std::size_t k = 0; k < views.size(); ++k)
+    EXPECT_TRUE(views[k].reflected.count("light_strip")) << kRampBands[k];
+}
+
+TEST(BuiltinRamp, PathsAndOptions) {
+  const Scene s = ssr::make_builtin_scene("ramp");
+  std::set<std::string> names;
+  for (const ssr::CameraPath& p : s.animation.paths) names.insert(p.name);
+  EXPECT_EQ(names, (std::set<std::string>{"dolly", "orbit", "pan"}));
+  EXPECT_EQ(s.animation.default_path, -1);
+  EXPECT_TRUE(s.animation.objects.empty());  // a still scene: only the camera moves
+  const Scene dolly = ssr::make_builtin_scene("ramp:path=dolly");
+  ASSERT_GE(dolly.animation.default_path, 0);
+  EXPECT_EQ(dolly.animation.paths[static_cast<std::size_t>(dolly.animation.default_path)].name, "dolly");
+  // At time 0 every path is at the default camera; the dolly ends closer to its target.
+  const ssr::Camera& cam = s.cameras[0];
+  for (const ssr::CameraPath& p : s.animation.paths) {
+    const ssr::Camera c0 = ssr::camera_at(p, 0.0f, cam);
+    EXPECT_EQ(c0.position, cam.position) << p.name;
+    EXPECT_EQ(c0.target, cam.target) << p.name;
+  }
+  const ssr::Camera end = ssr::camera_at(ssr::find_path(s, "dolly"), 4.0f, cam);
+  EXPECT_NEAR(glm::distance(end.position, cam.position), 4.0f, 0.1f);
+  // The ramp takes no option but path=.
+  EXPECT_THROW(ssr::make_builtin_scene("ramp:floor_roughness=0.5"), ssr::InputError);
+  EXPECT_THROW(ssr::make_builtin_scene("ramp:reflectors=2"), ssr::InputError);
+  EXPECT_NO_THROW(ssr::load_scene("ramp"));
 }
 
 // ---- gallery:floor_roughness=R (the PPR thesis's charts 5 and 6: roughness 0.2, 0.5, 1.0) ----------
