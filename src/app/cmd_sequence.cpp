@@ -31,6 +31,7 @@ struct SequenceOptions {
   std::string techniques;
   std::vector<std::string> presets;
   std::vector<std::string> sets;
+  std::vector<std::string> sweeps;
   std::string size = "320x180";
   int truth_every = 1;
   float fps = 30.0f;
@@ -72,7 +73,7 @@ int run_sequence_command(const SequenceOptions& o) {
   SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps};
   sequence_path(scene, o.path);  // an unknown path is an error before any work
   const std::vector<std::string> names = technique_names(o.techniques);
-  const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
+  const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
   std::vector<std::string> labels;
   for (const Variant& v : variants) labels.push_back(v.label());
   auto reference = create_technique("reference");
@@ -146,6 +147,8 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all but the reference).");
   c->add_option("--preset", o->presets, "Add a named preset as its own technique (repeatable).");
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
+  c->add_option("--sweep", o->sweeps,
+                "technique.key=v1,v2,... (repeatable; sweeps of one technique multiply): each value its own technique.");
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();

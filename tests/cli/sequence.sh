@@ -12,6 +12,8 @@ seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/b.json" > /dev/null
 seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > /dev/null
 seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > /dev/null
+seq --scene cornell --path still --frames 2 --techniques stochastic,hiz --sweep stochastic.temporal=false,true \
+  --sweep hiz.denoise=false,true --json "$tmp/sweep.json" > /dev/null
 
 python3 - "$tmp" <<'PY'
 import json, math, os, sys
@@ -41,6 +43,10 @@ for s in still["summary"]:
 # --truth-every 2: truth at frames 0, 1 (a pair), 2, 3.
 every = json.load(open(f"{tmp}/every.json"))
 assert [f["truth"] for f in every["frames"]] == [True, True, True, True]
+# --sweep: each value its own technique, labelled by it.
+sweep = json.load(open(f"{tmp}/sweep.json"))
+assert [s["label"] for s in sweep["summary"]] == ["stochastic temporal=false", "stochastic temporal=true",
+                                                   "hiz denoise=false", "hiz denoise=true"], sweep["summary"]
 assert os.path.getsize(f"{tmp}/a.svg") > 1000 and open(f"{tmp}/a.svg").read().count("<svg") == 3
 assert sorted(os.listdir(f"{tmp}/frames")) == [f"frame_{i:05d}.png" for i in range(8)]
 PY
