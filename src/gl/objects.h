@@ -64,6 +64,11 @@ struct QueryTraits {
   static GLuint create(GLenum target) { GLuint id; glCreateQueries(target, 1, &id); return id; }
   static void destroy(GLuint id) { glDeleteQueries(1, &id); }
 };
+struct SamplerTraits {
+  static constexpr GLenum kLabelKind = GL_SAMPLER;
+  static GLuint create(GLenum) { GLuint id; glCreateSamplers(1, &id); return id; }
+  static void destroy(GLuint id) { glDeleteSamplers(1, &id); }
+};
 struct ProgramTraits {
   static constexpr GLenum kLabelKind = GL_PROGRAM;
   static GLuint create(GLenum) { return glCreateProgram(); }
@@ -79,6 +84,7 @@ using Buffer = Object<BufferTraits>;
 using Framebuffer = Object<FramebufferTraits>;
 using VertexArray = Object<VertexArrayTraits>;
 using Query = Object<QueryTraits>;
+using Sampler = Object<SamplerTraits>;
 using ProgramObject = Object<ProgramTraits>;
 using ShaderObject = Object<ShaderTraits>;
 

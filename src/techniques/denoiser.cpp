@@ -54,28 +54,37 @@ std::vector<TextureDecl> Denoiser::textures(int trace_divisor) {
       {"trace ray", GL_RGBA16F, trace_divisor, false},
       {"spatial", GL_RGBA16F, 1, false},
       {"spatial stats", GL_RG16F, 1, false},
-      {"temporal", GL_RGBA16F, 1, false},
-      {"temporal stats", GL_RG16F, 1, false},
-      {"history", GL_RGBA16F, 1, true},
-      {"history stats", GL_RG16F, 1, true},
+      {"temporal A", GL_RGBA16F, 1, true},
+      {"temporal stats A", GL_RG16F, 1, true},
+      {"temporal B", GL_RGBA16F, 1, true},
+      {"temporal stats B", GL_RG16F, 1, true},
   };
 }
 
-std::vector<StageView> Denoiser::stage_views(int first, const shared::DenoiseParams& p) {
+std::vector<StageView> Denoiser::stage_views(int first, const shared::DenoiseParams& p) const {
   std::vector<StageView> v = {{ViewMode::Classes, first + kClass},
                               {ViewMode::Raw, first + kTraceRadiance},
                               {ViewMode::RayLength, first + kSpatialStats},
                               {ViewMode::Spatial, first + kSpatial}};
+  const int t = temporal_slot();
   if (p.temporal) {
-    v.push_back({ViewMode::Temporal, first + kTemporal});
-    v.push_back({ViewMode::History, first + kTemporalStats});
+    v.push_back({ViewMode::Temporal, first + t});
+    v.push_back({ViewMode::History, first + t + 1});
   }
-  v.push_back({ViewMode::Variance, first + (p.temporal ? kTemporalStats : kSpatialStats)});
+  v.push_back({ViewMode::Variance, first + (p.temporal ? t + 1 : kSpatialStats)});
   return v;
 }
 
 void Denoiser::load(const gl::ShaderSource& src) {
   spatial_ = gl::Program::compute(src, "denoise/spatial.comp");
+  if (!bilinear_) {
+    // The history is read at reprojected positions between texel centres.
+    bilinear_ = gl::Sampler("denoiser history (bilinear)", 0);
+    glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(bilinear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(bilinear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
   temporal_ = gl::Program::compute(src, "denoise/temporal.comp");
   bilateral_ = gl::Program::compute(src, "denoise/bilateral.comp");
 }
@@ -84,10 +93,7 @@ namespace {
 void bind_out(GLuint unit, const gl::Texture2D& t) {
   glBindImageTexture(unit, t.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, t.format());
 }
-void linear_filter(const gl::Texture2D& t) {
-  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-}
+
 constexpr GLbitfield kStageBarrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 }  // namespace
 
@@ -117,23 +123,24 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
   const gl::Texture2D* stats = &t(kSpatialStats);
   if (p.temporal) {
     gl::ScopedPass timed(frame.timer, "temporal");
-    linear_filter(t(kHistory));
-    linear_filter(t(kHistoryStats));
+    // Last frame wrote one pair (zeroed by the frame after a reset): read it, write the other.
+    const Slot out = temporal_slot(), in = out == kTemporalA ? kTemporalB : kTemporalA;
+    const auto next = [](Slot s) { return static_cast<Slot>(s + 1); };
     glBindTextureUnit(TEX_STAGE_IN, radiance->id());
     glBindTextureUnit(TEX_STAGE_STATS, stats->id());
-    glBindTextureUnit(TEX_HISTORY, t(kHistory).id());
-    glBindTextureUnit(TEX_HISTORY_STATS, t(kHistoryStats).id());
-    bind_out(IMG_OUT, t(kTemporal));
-    bind_out(IMG_OUT2, t(kTemporalStats));
+    glBindTextureUnit(TEX_HISTORY, t(in).id());
+    glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());
+    glBindSampler(TEX_HISTORY, bilinear_.id());
+    glBindSampler(TEX_HISTORY_STATS, bilinear_.id());
+    bind_out(IMG_OUT, t(out));
+    bind_out(IMG_OUT2, t(next(out)));
     temporal_.dispatch_2d(frame.width, frame.height);
-    glMemoryBarrier(kStageBarrier | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    // This frame's accumulation is next frame's history.
-    glCopyImageSubData(t(kTemporal).id(), GL_TEXTURE_2D, 0, 0, 0, 0, t(kHistory).id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       frame.width, frame.height, 1);
-    glCopyImageSubData(t(kTemporalStats).id(), GL_TEXTURE_2D, 0, 0, 0, 0, t(kHistoryStats).id(), GL_TEXTURE_2D, 0,
-                       0, 0, 0, frame.width, frame.height, 1);
-    radiance = &t(kTemporal);
-    stats = &t(kTemporalStats);
+    glMemoryBarrier(kStageBarrier);
+    glBindSampler(TEX_HISTORY, 0);
+    glBindSampler(TEX_HISTORY_STATS, 0);
+    written_ = !written_;
+    radiance = &t(out);
+    stats = &t(next(out));
   }
   {
     gl::ScopedPass timed(frame.timer, p.bilateral ? "bilateral" : "resolve");

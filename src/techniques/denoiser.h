@@ -32,17 +32,23 @@ class Denoiser {
     kTraceRay,       // RGBA16F hit vector, pdf, trace resolution
     kSpatial,        // RGBA16F premultiplied radiance after stage 1
     kSpatialStats,   // RG16F variance, mean hit length
-    kTemporal,       // RGBA16F after stage 2
-    kTemporalStats,  // RG16F variance, frames accumulated
-    kHistory,        // persistent copies of the two above, for the next frame
-    kHistoryStats,
+    // Stage 2's output and next frame's history, two pairs used in turn (persistent): a frame
+    // reads one pair and writes the other, so nothing is copied.
+    kTemporalA,      // RGBA16F premultiplied radiance after stage 2
+    kTemporalStatsA, // RG16F variance, frames accumulated
+    kTemporalB,
+    kTemporalStatsB,
     kSlotCount,
   };
   static std::vector<TextureDecl> textures(int trace_divisor);
   // The stage views (classes, raw, ray length, spatial, and with the temporal stage temporal,
-  // history; variance from the last stage) and the texture each shows, offset by `first`
-  // (where the block starts in the technique's textures).
-  static std::vector<StageView> stage_views(int first, const shared::DenoiseParams& p);
+  // history; variance from the last stage) and the texture each shows in the frame that runs
+  // next, offset by `first` (where the block starts in the technique's textures).
+  std::vector<StageView> stage_views(int first, const shared::DenoiseParams& p) const;
+  // Stage 2's output slot (radiance; + 1: its stats) in the frame that runs next.
+  Slot temporal_slot() const { return written_ ? kTemporalB : kTemporalA; }
+  // Forget the history: the next frame starts from pair A (which the frame zeroed).
+  void reset() { written_ = false; }
 
   void load(const gl::ShaderSource& src);
   // Runs the enabled stages on the block `tex` (kSlotCount textures) and writes the frame's
@@ -53,6 +59,8 @@ class Denoiser {
  private:
   gl::Program spatial_, temporal_, bilateral_;
   gl::Buffer ubo_;
+  gl::Sampler bilinear_;
+  bool written_ = false;  // the last frame wrote pair A: this one reads it and writes B
 };
 
 }  // namespace ssr

@@ -77,7 +77,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     d.reads = kReadGBuffer | kReadLit | kReadHiz | kReadMotion | kReadPrevDepth | kReadPrevNormal;
     if (params_.previous_frame) d.reads |= kReadPrevColor;
     d.textures = Denoiser::textures(divisor());
-    d.stage_views = Denoiser::stage_views(0, params_.denoise);
+    d.stage_views = denoiser_.stage_views(0, params_.denoise);
     for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
     return d;
   }
@@ -104,6 +104,8 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     denoiser_.run(in, tex, p.denoise, divisor());
     in.rebind();
   }
+
+  void reset() override { denoiser_.reset(); }
 
   // Tiles listed and rays cast by the last frame (stalls): tests and the speed report.
   shared::TileListHeader last_counts() const { return classifier_.read_header(); }

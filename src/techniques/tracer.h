@@ -75,6 +75,8 @@ class TracerTechnique : public TechniqueWithParams<P> {
     in.rebind();
   }
 
+  void reset() override { denoiser_.reset(); }
+
   // Every tracer reads the G-buffer, the lit colour and the glass surfaces (it refracts), and
   // fills the steps/hits/distance debug views; `extra_reads` adds its own (the Hi-Z pyramid).
   TechniqueDecl declare() const override {
@@ -88,7 +90,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
       // Its second image holds the rays then: the stage views replace the step views.
       d.reads |= kReadMotion | kReadPrevDepth | kReadPrevNormal;
       d.textures = Denoiser::textures(1);
-      d.stage_views = Denoiser::stage_views(0, this->params_.ray.denoise);
+      d.stage_views = denoiser_.stage_views(0, this->params_.ray.denoise);
       d.debug_views.clear();
       for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
     }

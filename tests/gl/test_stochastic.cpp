@@ -63,6 +63,7 @@ class DenoiseProbe final : public TechniqueWithParams<shared::DenoiseParams> {
     classifier_.load(src);
     denoiser_.load(src);
   }
+  void reset() override { denoiser_.reset(); }
   TechniqueDecl declare() const override {
     TechniqueDecl d;
     d.reads = kReadGBuffer | kReadLit | kReadMotion | kReadPrevDepth | kReadPrevNormal;
@@ -85,7 +86,6 @@ class DenoiseProbe final : public TechniqueWithParams<shared::DenoiseParams> {
     glTextureSubImage2D(tex[Denoiser::kTraceRay]->id(), 0, 0, 0, f.width, f.height, GL_RGBA, GL_FLOAT, ray.data());
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
     denoiser_.run(f, tex, params_, 1);
-    temporal_stats = tex[Denoiser::kTemporalStats];
     f.rebind();
   }
   shared::DenoiseParams& p() { return params_; }
@@ -111,7 +111,6 @@ class DenoiseProbe final : public TechniqueWithParams<shared::DenoiseParams> {
     return im;
   }
   std::function<glm::vec3(int, int, int)> radiance;
-  const gl::Texture2D* temporal_stats = nullptr;
 
  private:
   RgbaImageF normals;
