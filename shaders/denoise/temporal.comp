@@ -8,7 +8,8 @@
 //             a moving camera.
 // Each is checked against the surface last frame there (normal, roughness; depth for the
 // surface one); of the valid ones the one closer to this frame's 3x3 neighbourhood wins. Its
-// history is clipped to the neighbourhood's mean +- clip_gamma * sigma and blended with weight
+// history is clipped to the neighbourhood's mean +- clip_gamma * sigma (widened to hold this
+// frame's value) and blended with weight
 // 1 / n (n = frames accumulated, at most `history`). Nothing valid: the history restarts.
 // Writes premultiplied radiance and (variance, frames accumulated).
 #include "common/brdf.glsl"
@@ -120,8 +121,10 @@ void main() {
   float variance = stats.r;
   float frames = 1.0;
   if (reprojected && history_stats_value.g >= 1.0) {
+    // The box always holds this frame's own value: a pixel unlike its neighbours (an edge, a
+    // sharp highlight) keeps its history instead of being pulled to the neighbourhood's mean.
     float gamma = pass.params.clip_gamma;
-    history = clamp(history, mean - gamma * sigma, mean + gamma * sigma);
+    history = clamp(history, min(mean - gamma * sigma, current), max(mean + gamma * sigma, current));
     frames = min(history_stats_value.g + 1.0, float(max(pass.params.history, 1)));
     result = mix(history, current, 1.0 / frames);
     variance = mix(stats.r, history_stats_value.r, clamp(pass.params.variance_stability, 0.0, 1.0));

@@ -8,7 +8,7 @@
 SSR_SHARED_BEGIN
 
 struct StochasticParams {
-  float roughness_threshold SSR_DEFAULT(0.7f);  // rougher pixels get the environment
+  float roughness_threshold SSR_DEFAULT(1.0f);  // rougher pixels get the environment (1: none)
   int rays_per_quad SSR_DEFAULT(2);             // choice 0,1,2: 1, 2 or 4 rays per 2x2 quad above quad_roughness
   float quad_roughness SSR_DEFAULT(0.3f);       // pixels at or below it trace one ray each
   float ggx_bias SSR_DEFAULT(0.0f);             // 0..1: pulls samples towards the lobe's centre

@@ -49,8 +49,10 @@ void main() {
     vec3 v = -normalize(g.pos_vs);
     vec2 xi = blue_noise_xi(p, frame.counts.z, params.seed);
     xi.x *= 1.0 - clamp(params.ggx_bias, 0.0, 1.0);  // towards the lobe's centre (less noise, some bias)
-    vec3 l = sample_reflection(g.n_vs, v, g.roughness, xi);
-    if (dot(l, g.n_vs) <= 0.0) l = reflect(-v, g.n_vs);  // under the horizon: the mirror ray
+    // Mirrors (as the tracers' ssr_main) take the exact mirror ray; others a GGX VNDF sample,
+    // the mirror ray where it falls under the horizon.
+    vec3 l = g.roughness < 0.01 ? reflect(-v, g.n_vs) : sample_reflection(g.n_vs, v, g.roughness, xi);
+    if (dot(l, g.n_vs) <= 0.0) l = reflect(-v, g.n_vs);
     float pdf = reflection_pdf(g.n_vs, v, l, g.roughness);
     TraceResult r = hiz_trace(g.pos_vs, l, HizTrace(params.max_distance, params.max_iterations, 0,
                                                      params.max_level, params.thickness, false));

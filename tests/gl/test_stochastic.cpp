@@ -306,8 +306,8 @@ TEST(Stochastic, LowersErrorOnCornellOverStillFrames) {
     const auto psnr = [&](int frame) { return res.frames.at(static_cast<std::size_t>(frame)).results.at(v).error->psnr; };
     std::printf("%s on cornell %dx%d: %.2f dB at frame 0, %.2f at 1, %.2f at 15\n", variants[v].label().c_str(), kW,
                 kH, psnr(0), psnr(1), psnr(15));
-    // Measured (llvmpipe): stochastic 17.02 dB at frame 0, 21.60 at 1, 23.38 at 15; hiz
-    // denoised 21.46, 22.71, 22.94 (its first frame's 1 spp scored better by chance).
+    // Measured (llvmpipe): stochastic 17.02 dB at frame 0, 21.60 at 1, 23.39 at 15; hiz
+    // denoised 21.46, 22.71, 22.96 (its first frame's 1 spp scored better by chance).
     EXPECT_GT(psnr(15), psnr(0) + (v == 0 ? 4.0 : 0.75)) << variants[v].label();
     EXPECT_EQ(res.summary.at(v).nonfinite, 0u);
   }

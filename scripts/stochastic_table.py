@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Markdown tables for docs/RESULTS.md's stochastic section, from scripts/stochastic_results.sh's
+JSON: stages-*.json (each denoiser stage, per roughness band), paths-*.json (instability and
+ghosting), bench JSON (time per pass).
+  scripts/stochastic_table.py stages DIR | paths DIR | bench FILE.json..."""
+import glob
+import json
+import os
+import sys
+
+
+def fmt(v, digits=2):
+    return "-" if v is None else f"{v:.{digits}f}"
+
+
+def short(label):
+    """'stochastic spatial=true temporal=false bilateral=true' -> 'S . B'; others unchanged."""
+    if not label.startswith("stochastic "):
+        return label + " (16 rays)" if label == "hiz" else label
+    on = {k: v == "true" for k, v in (kv.split("=") for kv in label.split()[1:])}
+    return " ".join(n if on[k] else "." for k, n in (("spatial", "S"), ("temporal", "T"), ("bilateral", "B")))
+
+
+def reflection_psnr(result, region):
+    r = result["regions"].get(region)
+    return None if not r or not r["pixels"] else r["traceable"]["psnr_reflection"]
+
+
+def stages(directory):
+    for path in sorted(glob.glob(os.path.join(directory, "stages-*.json"))):
+        d = json.load(open(path))
+        last = len(d["frames"]) - 1
+        regions = [k for k in ("mirror", "glossy", "rough") if d["frames"][0]["results"][0]["regions"][k]["pixels"]]
+        bands = sorted((k for k in d["frames"][0]["results"][0]["regions"] if k.startswith("reflector:")),
+                       key=lambda k: int(k.split(":")[1]))
+        if len(bands) > 2:  # the ramp: one column per band (roughness (N-1)/10)
+            regions = bands
+        names = [f"r {(int(k.split(':')[1]) - 1) / 10:.1f}" if k.startswith("reflector:") else k for k in regions]
+        print(f"\n{d['scene']} ({d['width']}x{d['height']}, still camera): reflection PSNR (dB) on traceable "
+              f"pixels, frame 0 -> frame {last}; flicker = mean excess change per frame\n")
+        print("| stages | " + " | ".join(names) + " | flicker |")
+        print("|---|" + "---|" * (len(regions) + 1))
+        for i, s in enumerate(d["summary"]):
+            first = d["frames"][0]["results"][i]
+            end = d["frames"][last]["results"][i]
+            cells = [f"{fmt(reflection_psnr(first, k), 1)} -> {fmt(reflection_psnr(end, k), 1)}" for k in regions]
+            print(f"| {short(s['label'])} | " + " | ".join(cells) + f" | {fmt(s['instability']['mean'], 4)} |")
+
+
+def paths(directory):
+    print("\n| scene:path | technique | PSNR (final) | flicker mean | flicker p95 | disoccluded PSNR | elsewhere |")
+    print("|---|---|---|---|---|---|---|")
+    for path in sorted(glob.glob(os.path.join(directory, "paths-*.json"))):
+        d = json.load(open(path))
+        for s in d["summary"]:
+            conv = [c for c in s["convergence"] if c is not None]
+            mean = sum(conv) / len(conv) if conv else None
+            g = s["ghosting"]
+            print(f"| {d['scene']}:{d['path']} | {s['label']} | {fmt(mean)} | {fmt(s['instability']['mean'], 4)} | "
+                  f"{fmt(s['instability']['p95'], 4)} | {fmt(g['disoccluded_psnr'])} | {fmt(g['elsewhere_psnr'])} |")
+
+
+def bench(files):
+    skip = {"gbuffer", "lighting", "composite", "display"}
+    rows, passes = [], []
+    for f in files:
+        d = json.load(open(f))
+        for run in d["runs"]:
+            for r in run["results"]:
+                p = {x["name"]: x["ms"] for x in r["passes"] if x["name"] not in skip}
+                passes += [n for n in p if n not in passes]
+                rows.append((run["scene"], "x".join(map(str, run["size"])), r.get("label", r["technique"]),
+                             r["time_ms"]["median"], r["error"]["psnr"], p))
+    print("\n| scene | size | variant | ms | PSNR dB | " + " | ".join(passes) + " |")
+    print("|---|---|---|---|---|" + "---|" * len(passes))
+    for scene, size, label, ms, psnr, p in rows:
+        print(f"| {scene} | {size} | {label} | {ms:.3f} | {psnr:.2f} | " +
+              " | ".join(fmt(p.get(n), 3) for n in passes) + " |")
+
+
+if __name__ == "__main__":
+    what = sys.argv[1]
+    {"stages": lambda: stages(sys.argv[2]), "paths": lambda: paths(sys.argv[2]),
+     "bench": lambda: bench(sys.argv[2:])}[what]()
