@@ -22,15 +22,19 @@ def short(label):
 
 
 def reflection_psnr(result, region):
+    """From ssrlab's JSON, or the stripped copies in docs/results/stochastic."""
     r = result["regions"].get(region)
-    return None if not r or not r["pixels"] else r["traceable"]["psnr_reflection"]
+    if not r or not r["pixels"]:
+        return None
+    return r["traceable"]["psnr_reflection"] if "traceable" in r else r["psnr_reflection"]
 
 
 def stages(directory):
     for path in sorted(glob.glob(os.path.join(directory, "stages-*.json"))):
         d = json.load(open(path))
         last = len(d["frames"]) - 1
-        regions = [k for k in ("mirror", "glossy", "rough") if d["frames"][0]["results"][0]["regions"][k]["pixels"]]
+        first_regions = d["frames"][0]["results"][0]["regions"]
+        regions = [k for k in ("mirror", "glossy", "rough") if first_regions.get(k, {}).get("pixels")]
         bands = sorted((k for k in d["frames"][0]["results"][0]["regions"] if k.startswith("reflector:")),
                        key=lambda k: int(k.split(":")[1]))
         if len(bands) > 2:  # the ramp: one column per band (roughness (N-1)/10)
