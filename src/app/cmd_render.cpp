@@ -87,6 +87,16 @@ int run_render(const RenderOptions& o) {
                }), sets.end());
   auto technique = create_technique(technique_name);
   apply_assignments(*technique, sets);
+  if (view_info(view).debug) {
+    // A debug view the technique does not fill would be a black image that looks like a result.
+    const TechniqueDecl decl = technique->declare();
+    if (std::find(decl.debug_views.begin(), decl.debug_views.end(), view) == decl.debug_views.end()) {
+      std::string fills;
+      for (ViewMode v : decl.debug_views) fills += (fills.empty() ? "" : ", ") + std::string(view_info(v).name);
+      throw InputError("technique '" + technique_name + "' does not fill the view '" + o.view + "' (" +
+                       (fills.empty() ? std::string("it fills no debug view") : "its debug views: " + fills) + ").");
+    }
+  }
   auto reference = hits_view ? create_technique("reference") : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20)

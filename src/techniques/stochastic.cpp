@@ -36,7 +36,7 @@ std::vector<ParamDesc> table() {
                       "Pulls the GGX samples towards the lobe's centre: less noise, narrower (biased) reflections."),
       SSR_PARAM_BOOL(P, half_resolution,
                      "Trace one pixel of each 2x2 block (rotating each frame); the spatial stage upsamples "
-                     "with depth-aware weights."),
+                     "with depth-aware weights. The half grid rounds up: a 1-pixel-wide image traces its pixels."),
       SSR_PARAM_BOOL(P, previous_frame,
                      "Hits read the previous frame's final colour (reflections included): reflections of "
                      "reflections build up over frames."),

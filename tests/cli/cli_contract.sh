@@ -36,10 +36,16 @@ expect_exit 0 render --scene corridor --camera default --gl osmesa $S --out "$tm
 expect_exit 0 scenes
 grep -q gallery "$tmp/stdout" && ok || bad "scenes does not list gallery"
 expect_exit 0 techniques
-for key in linear.max_steps linear.step_size linear.thickness linear.max_distance linear.depth_interp; do
+for key in linear.max_steps linear.step_size linear.thickness linear.max_distance linear.depth_interp \
+           stochastic.roughness_threshold hiz.denoise stochastic-low stochastic-medium stochastic-high stochastic-ultra; do
   grep -q "$key" "$tmp/stdout" && ok || bad "techniques does not list $key"
 done
 ls "$tmp"/*.tmp* >/dev/null 2>&1 && bad "temporary files left behind" || ok
+expect_exit 0 render --technique stochastic $S --view spatial --out "$tmp/s.png"
+expect_exit 0 render --preset stochastic-low $S --out "$tmp/s.png"
+expect_exit 0 render --technique hiz --set hiz.denoise=true $S --view temporal --out "$tmp/s.png"
+# Half resolution on an image 1 pixel high: the half grid rounds up (1 row), documented.
+expect_exit 0 render --technique stochastic --size 3x1 --set stochastic.half_resolution=true --out "$tmp/s.exr"
 
 # --- bad input: one sentence, exit 2, nothing written -----------------------------------------
 expect_exit 2 render --scene nope $S --out "$tmp/out.png"
@@ -57,6 +63,11 @@ expect_exit 2 render --size 40000x8 --out "$tmp/out.png"
 expect_exit 2 render --size big --out "$tmp/out.png"
 expect_exit 2 render --camera nope $S --out "$tmp/out.png"
 expect_exit 2 render --view nope $S --out "$tmp/out.png"
+expect_exit 2 render --technique linear --view spatial $S --out "$tmp/out.png"
+expect_exit 2 render --technique none --view steps $S --out "$tmp/out.png"
+expect_exit 2 render --preset stochastic-mega $S --out "$tmp/out.png"
+expect_exit 2 render --technique stochastic --set stochastic.roughness_threshold=1.5 $S --out "$tmp/out.png"
+expect_exit 2 render --technique stochastic --set stochastic.rays_per_quad=3 $S --out "$tmp/out.png"
 expect_exit 2 render $S --out "$tmp/out.jpg"
 expect_exit 2 render $S --out "$tmp/no/such/dir/out.png"
 expect_exit 2 render $S --exposure abc --out "$tmp/out.png"
