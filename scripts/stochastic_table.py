@@ -52,16 +52,18 @@ def stages(directory):
 
 
 def paths(directory):
-    print("\n| scene:path | technique | PSNR (final) | flicker mean | flicker p95 | disoccluded PSNR | elsewhere |")
-    print("|---|---|---|---|---|---|---|")
+    print("\n| scene:path | technique | PSNR (final) | flicker mean | flicker p95 | change x truth | disoccluded PSNR | elsewhere |")
+    print("|---|---|---|---|---|---|---|---|")
     for path in sorted(glob.glob(os.path.join(directory, "paths-*.json"))):
         d = json.load(open(path))
         for s in d["summary"]:
             conv = [c for c in s["convergence"] if c is not None]
             mean = sum(conv) / len(conv) if conv else None
             g = s["ghosting"]
+            ratio = s["instability"].get("change_ratio")  # absent before revision 2026-11-27 (third session)
             print(f"| {d['scene']}:{d['path']} | {s['label']} | {fmt(mean)} | {fmt(s['instability']['mean'], 4)} | "
-                  f"{fmt(s['instability']['p95'], 4)} | {fmt(g['disoccluded_psnr'])} | {fmt(g['elsewhere_psnr'])} |")
+                  f"{fmt(s['instability']['p95'], 4)} | {fmt(ratio)} | {fmt(g['disoccluded_psnr'])} | "
+                  f"{fmt(g['elsewhere_psnr'])} |")
 
 
 def bench(files):

@@ -61,6 +61,7 @@ struct TechniqueRun {
   std::vector<float> excess;    // every pair's pixels
   std::vector<std::pair<std::string, std::vector<float>>> region_excess;  // the same by region
   GhostSums ghost;
+  ChangeTotals change;          // technique and truth change over every pair
 };
 
 }  // namespace
@@ -143,6 +144,11 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           for (float e : map)
             if (e >= 0.0f) sum += e, ++n, run.excess.push_back(e);
           if (n) r.instability = sum / static_cast<double>(n);
+          const ChangeTotals c = change_totals(previous, now, before, s.reflected, run.reflected_before,
+                                               scored->truth_reflected(), truth_reflected_before);
+          run.change.technique += c.technique;
+          run.change.truth += c.truth;
+          run.change.pixels += c.pixels;
           for (const Region& region : frame_regions(scored->labels())) {
             const std::string name = region.name();
             auto it = std::find_if(run.region_excess.begin(), run.region_excess.end(),
@@ -199,6 +205,12 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
       stats(values, ri);
       s.instability_regions.push_back(ri);
     }
+    if (run.change.pixels) {
+      const double n = static_cast<double>(run.change.pixels);
+      s.change_mean = run.change.technique / n;
+      s.truth_change_mean = run.change.truth / n;
+      if (run.change.truth > 0) s.change_ratio = run.change.technique / run.change.truth;
+    }
     s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
     s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
     s.disoccluded_pixels = run.ghost.recent_px;
@@ -234,7 +246,9 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
       regions[ri.region] = {{"mean", optional_json(ri.mean)}, {"p95", optional_json(ri.p95)}, {"pixels", ri.pixels}};
     summary.push_back({{"technique", s.technique},
                        {"label", s.label},
-                       {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions}}},
+                       {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
+                                       {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
+                                       {"change_ratio", optional_json(s.change_ratio)}}},
                        {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
                        {"convergence", convergence},
                        {"nonfinite", s.nonfinite}});
@@ -254,8 +268,8 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
 std::string sequence_table(const SequenceResults& r) {
   std::string o;
   char line[256];
-  std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s\n", "technique", "mean PSNR", "flicker mean",
-                "flicker p95", "disocc. PSNR", "elsewhere");
+  std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s %12s\n", "technique", "mean PSNR", "flicker mean",
+                "flicker p95", "x truth", "disocc. PSNR", "elsewhere");
   o += line;
   auto num = [](const std::optional<double>& v, const char* f) {
     char b[32];
@@ -268,9 +282,10 @@ std::string sequence_table(const SequenceResults& r) {
     int n = 0;
     for (const auto& p : s.convergence)
       if (p && std::isfinite(*p)) sum += *p, ++n;
-    std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s\n", s.label.c_str(),
+    std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s %12s\n", s.label.c_str(),
                   num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB").c_str(),
                   num(s.instability_mean, "%.5f").c_str(), num(s.instability_p95, "%.5f").c_str(),
+                  num(s.change_ratio, "%.2f").c_str(),
                   num(s.disoccluded_psnr, "%.2f dB").c_str(), num(s.elsewhere_psnr, "%.2f dB").c_str());
     o += line;
   }

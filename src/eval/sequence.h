@@ -50,6 +50,9 @@ struct SequenceSummary {
     std::size_t pixels = 0;
   };
   std::vector<RegionInstability> instability_regions;  // breakdown.h's regions, report order
+  // Mean change per pixel between frame pairs of the technique and of the truth (same pixels),
+  // and their ratio: the technique moves `change_ratio` times as much as the scene does.
+  std::optional<double> change_mean, truth_change_mean, change_ratio;
   std::optional<double> disoccluded_psnr, elsewhere_psnr;   // final image vs truth
   std::size_t disoccluded_pixels = 0;
   std::vector<std::optional<double>> convergence;           // PSNR per truth frame

@@ -34,20 +34,48 @@ std::vector<float> excess_change(const std::vector<int>& previous, const Tempora
   return out;
 }
 
+namespace {
+
+// Mean over RGB of |a[i] - b[j]|.
+float change(const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_t j) {
+  float s = 0;
+  for (std::size_t c = 0; c < 3; ++c) s += std::abs(a.pixels[i * 4 + c] - b.pixels[j * 4 + c]);
+  return s / 3.0f;
+}
+
+// The pixel `now` pixel i was in `before` when both do reflection work there, else -1.
+long measured_previous(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
+                       std::size_t i) {
+  if (previous[i] < 0 || !now.reflective[i]) return -1;
+  return before.reflective[static_cast<std::size_t>(previous[i])] ? previous[i] : -1;
+}
+
+}  // namespace
+
+ChangeTotals change_totals(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
+                           const RgbaImageF& technique_now, const RgbaImageF& technique_before,
+                           const RgbaImageF& truth_now, const RgbaImageF& truth_before) {
+  ChangeTotals t;
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    const long j = measured_previous(previous, now, before, i);
+    if (j < 0) continue;
+    const float a = change(technique_now, i, technique_before, static_cast<std::size_t>(j));
+    t.technique += std::isfinite(a) ? a : 1.0;
+    t.truth += change(truth_now, i, truth_before, static_cast<std::size_t>(j));
+    ++t.pixels;
+  }
+  return t;
+}
+
 std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
                                      const TemporalFrame& before, const RgbaImageF& technique_now,
                                      const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                      const RgbaImageF& truth_before) {
   std::vector<float> out(previous.size(), -1.0f);
-  auto change = [](const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_t j) {
-    float s = 0;
-    for (std::size_t c = 0; c < 3; ++c) s += std::abs(a.pixels[i * 4 + c] - b.pixels[j * 4 + c]);
-    return s / 3.0f;
-  };
   for (std::size_t i = 0; i < previous.size(); ++i) {
-    if (previous[i] < 0 || !now.reflective[i]) continue;
-    const auto j = static_cast<std::size_t>(previous[i]);
-    if (!before.reflective[j]) continue;
+    const long jj = measured_previous(previous, now, before, i);
+    if (jj < 0) continue;
+    const auto j = static_cast<std::size_t>(jj);
     const float excess = change(technique_now, i, technique_before, j) - change(truth_now, i, truth_before, j);
     // A non-finite image is flicker without bound; the metric must not hide it as NaN.
     out[i] = std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f;

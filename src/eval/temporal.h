@@ -40,6 +40,17 @@ std::vector<float> excess_change_map(const std::vector<int>& previous, const Tem
                                      const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                      const RgbaImageF& truth_before);
 
+// How much the technique's and the truth's images changed on the pixels excess_change measures:
+// sums of the per-pixel change (mean over RGB of display values). Their ratio says how much
+// more the technique moves than the scene does.
+struct ChangeTotals {
+  double technique = 0, truth = 0;
+  std::size_t pixels = 0;
+};
+ChangeTotals change_totals(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
+                           const RgbaImageF& technique_now, const RgbaImageF& technique_before,
+                           const RgbaImageF& truth_now, const RgbaImageF& truth_before);
+
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,

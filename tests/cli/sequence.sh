@@ -30,7 +30,9 @@ for f in a["frames"]:
         assert math.isfinite(r["error"]["psnr"]) and "all" in r["regions"]
 for s in a["summary"]:
     assert {"technique", "label", "instability", "ghosting", "convergence"} <= s.keys()
-    assert set(s["instability"]) >= {"mean", "p95"} and set(s["ghosting"]) >= {"disoccluded_psnr", "elsewhere_psnr"}
+    assert set(s["instability"]) >= {"mean", "p95", "change_mean", "truth_change_mean", "change_ratio"}
+    assert set(s["ghosting"]) >= {"disoccluded_psnr", "elsewhere_psnr"}
+    assert s["instability"]["change_mean"] >= 0 and s["instability"]["truth_change_mean"] >= 0
     assert len(s["convergence"]) == 8
     assert s["instability"]["mean"] >= 0 and s["instability"]["p95"] >= s["instability"]["mean"] * 0.5
 # Run to run: the same numbers (the device and revision are the same too).

@@ -64,6 +64,20 @@ TEST(Temporal, ExcessChangeIsChangeBeyondTheTruths) {
   EXPECT_EQ(excess_change(q, b, a, bad, image(4, 2, 0.1f), t1, t0)[0], 1.0f);
 }
 
+TEST(Temporal, ChangeTotalsCompareTheTechniquesChangeWithTheTruths) {
+  const TemporalFrame a = frame(4, 2, {0, 0});
+  TemporalFrame b = frame(4, 2, {0, 0});
+  b.reflective[3] = false;  // not measured: not reflective now
+  const std::vector<int> q = reproject(b, a);
+  // Truth brightens by 0.1, the technique by 0.3: three times the scene's change, on 7 pixels.
+  const ChangeTotals c = change_totals(q, b, a, image(4, 2, 0.4f), image(4, 2, 0.1f), image(4, 2, 0.6f),
+                                       image(4, 2, 0.5f));
+  EXPECT_EQ(c.pixels, 7u);
+  EXPECT_NEAR(c.technique / c.pixels, 0.3, 1e-5);
+  EXPECT_NEAR(c.truth / c.pixels, 0.1, 1e-5);
+  EXPECT_NEAR(c.technique / c.truth, 3.0, 1e-4);
+}
+
 TEST(Temporal, AgesGrowAndRestart) {
   const TemporalFrame a = frame(4, 2, {0, 0});
   TemporalFrame b = a;
