@@ -155,7 +155,9 @@ TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
       ++n;
     }
   EXPECT_GT(n, kW * kH / 3);
-  EXPECT_LT(worst, 1e-3);  // half-float rounding of values in [0, 1]: measured 0.00024
+  // Three half-float roundings (upload, spatial, resolve) of values in [0, 1]: up to 0.0015;
+  // measured 0.00096.
+  EXPECT_LT(worst, 2e-3);
   test::expect_no_gl_errors();
 }
 
@@ -217,7 +219,9 @@ TEST(Denoiser, TemporalAccumulationKeepsAStillSharpInput) {
         if (mask[static_cast<std::size_t>(y) * kW + x])
           worst = std::max(worst, double(std::abs(test::texel(out, x, y)[0] - probe.radiance(x, y, f).x)));
   }
-  EXPECT_LT(worst, 0.01);  // half-float rounding of 4.0: 0.002 (measured 0; 0.89 with the clip to mean +- gamma sigma alone)
+  // Half-float rounding near 4.0: 0.002 (measured 0.00195; 0.89 with the clip to mean +- gamma
+  // sigma alone).
+  EXPECT_LT(worst, 0.01);
   test::expect_no_gl_errors();
 }
 
