@@ -71,7 +71,7 @@ void check_inputs(const PixelLabels& l, const TechniqueImages& t, const Referenc
 // Accumulators of one class within one region.
 struct ClassAccum {
   Accum truth, ideal, refl_truth, refl_ideal, noise;
-  std::size_t claimed = 0, correct = 0;
+  std::size_t claimed = 0, correct = 0, false_claims = 0;
   ClassFigures figures(PixelClass c, bool has_noise_floor) const {
     ClassFigures f;
     f.pixels = truth.n;
@@ -84,7 +84,7 @@ struct ClassAccum {
       f.correct_coverage = share(correct, truth.n);
       if (has_noise_floor) f.noise_floor_psnr = noise.psnr();
     } else {
-      f.false_hit_rate = share(claimed, truth.n);
+      f.false_hit_rate = share(false_claims, truth.n);
     }
     return f;
   }
@@ -151,13 +151,12 @@ Region parse_region(const std::string& name, int reflectors) {
                    "' (known: all, planar, reflector:N, other, mirror, glossy, rough, refractive).");
 }
 
-HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* ideal_reflected) {
+HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* expected) {
   if (c == PixelClass::NotReflective) return HitClass::NotReflective;
   const bool claimed = confidence > kHitConfidence;  // false for NaN
-  if (c != PixelClass::Traceable) return claimed ? HitClass::False : HitClass::CorrectMiss;
-  if (!claimed) return HitClass::Missed;
+  if (!claimed) return c == PixelClass::Traceable ? HitClass::Missed : HitClass::CorrectMiss;
   for (int k = 0; k < 3; ++k)  // NaN fails the comparison: a wrong colour
-    if (!(std::abs(reflected[k] - ideal_reflected[k]) <= kCorrectHitTolerance)) return HitClass::False;
+    if (!(std::abs(reflected[k] - expected[k]) <= kCorrectHitTolerance)) return HitClass::False;
   return HitClass::Correct;
 }
 
@@ -169,7 +168,8 @@ std::vector<HitClass> hit_classes(const PixelLabels& labels, const TechniqueImag
     out[i] = planar_only && (labels.reflector[i] == 0 || labels.is_glass(i)) &&
                      labels.classes[i] != PixelClass::NotReflective
                  ? HitClass::NotHandled
-                 : classify_hit(labels.classes[i], (*t.confidence)[i], px(t.reflected, i), px(r.ideal_reflected, i));
+                 : classify_hit(labels.classes[i], (*t.confidence)[i], px(t.reflected, i),
+                                px(labels.classes[i] == PixelClass::Traceable ? r.ideal_reflected : r.truth_reflected, i));
   return out;
 }
 
@@ -194,6 +194,7 @@ Breakdown compute_breakdown(const PixelLabels& labels, const TechniqueImages& t,
       a.refl_truth.add(px(t.reflected, i), px(r.truth_reflected, i));
       const HitClass h = hits[i];
       a.claimed += h == HitClass::Correct || h == HitClass::False;
+      a.false_claims += h == HitClass::False;
       switch (h) {
         case HitClass::Correct: ++f.hits.correct; break;
         case HitClass::False: ++f.hits.false_hits; break;

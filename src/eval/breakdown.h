@@ -60,14 +60,18 @@ Region parse_region(const std::string& name, int reflectors);
 // Per-pixel verdict on a technique's claim.
 enum class HitClass : std::uint8_t {
   NotReflective = 0,
-  Correct = 1,      // traceable, claimed, right colour
-  False = 2,        // claimed but wrong: wrong surface on a traceable pixel, or any claim on a
-                    // missing or sky pixel (through the thickness, a hidden layer, the sky)
+  Correct = 1,      // claimed, right colour: on a traceable pixel the screen-space ideal's; on
+                    // a missing or sky pixel the truth's (a technique that is not limited to
+                    // the screen, as the planar oracle, gets them right)
+  False = 2,        // claimed, wrong colour: the wrong surface on a traceable pixel; on a
+                    // missing or sky pixel a guess (through the thickness, a hidden layer, hole
+                    // filling) that is not what the truth reflects
   Missed = 3,       // traceable but not claimed
   CorrectMiss = 4,  // missing or sky, not claimed (the environment is the right fallback)
   NotHandled = 5,   // outside the technique's domain (non-planar pixels for ppr and planar)
 };
-HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* ideal_reflected);
+// `expected`: the ideal's reflected colour on a traceable pixel, the truth's elsewhere.
+HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* expected);
 
 // One technique's images on the frame; all display values, the same size as the labels.
 struct TechniqueImages {

@@ -89,14 +89,18 @@ TEST(Breakdown, HitClassesFollowConfidenceClassAndColour) {
   const float a[3] = {0.5f, 0.5f, 0.5f};
   const float near[3] = {0.59f, 0.5f, 0.41f};  // within 0.1 in every channel
   const float far[3] = {0.5f, 0.62f, 0.5f};
+  const float nan3[3] = {NAN, 0.5f, 0.5f};
   EXPECT_EQ(classify_hit(PixelClass::Traceable, 1.0f, a, near), HitClass::Correct);
   EXPECT_EQ(classify_hit(PixelClass::Traceable, 1.0f, a, far), HitClass::False);
   EXPECT_EQ(classify_hit(PixelClass::Traceable, 0.5f, a, a), HitClass::Missed);  // 0.5 is no claim
-  EXPECT_EQ(classify_hit(PixelClass::Missing, 0.51f, a, a), HitClass::False);
-  EXPECT_EQ(classify_hit(PixelClass::Sky, 0.9f, a, a), HitClass::False);
+  // On missing and sky pixels a claim is judged against the truth's colour: a wrong guess is
+  // false, the truth itself (a technique not limited to the screen) is correct.
+  EXPECT_EQ(classify_hit(PixelClass::Missing, 0.51f, a, far), HitClass::False);
+  EXPECT_EQ(classify_hit(PixelClass::Sky, 0.9f, a, far), HitClass::False);
+  EXPECT_EQ(classify_hit(PixelClass::Missing, 0.9f, a, near), HitClass::Correct);
+  EXPECT_EQ(classify_hit(PixelClass::Sky, 0.9f, nan3, a), HitClass::False);
   EXPECT_EQ(classify_hit(PixelClass::Sky, 0.0f, a, a), HitClass::CorrectMiss);
   EXPECT_EQ(classify_hit(PixelClass::NotReflective, 1.0f, a, a), HitClass::NotReflective);
-  const float nan3[3] = {NAN, 0.5f, 0.5f};
   EXPECT_EQ(classify_hit(PixelClass::Traceable, 1.0f, nan3, a), HitClass::False);
   EXPECT_EQ(classify_hit(PixelClass::Traceable, NAN, a, a), HitClass::Missed);
 }
@@ -111,8 +115,10 @@ TEST(Breakdown, KnownErrorsPerRegionAndClass) {
     set_px(f.tech, x, 0, 0.5f);
     set_px(f.tech_r, x, 0, 0.51f);
   }
-  // Missing pixel (0,1) claimed; sky pixel (3,2) claimed; traceable (2,0) not claimed.
+  // Missing pixel (0,1) claimed with a wrong colour; sky pixel (3,2) claimed with the truth's
+  // colour (not a false hit); traceable (2,0) not claimed.
   f.conf[4] = 0.9f;
+  set_px(f.tech_r, 0, 1, 0.9f);
   f.conf[11] = 0.9f;
   f.conf[2] = 0.2f;
   const Breakdown b = compute_breakdown(f.labels, f.technique(), f.refs(), false);
@@ -135,12 +141,15 @@ TEST(Breakdown, KnownErrorsPerRegionAndClass) {
   EXPECT_EQ(r1->hits.correct_miss, 3u);
   // Identical images elsewhere: capped, finite, not null.
   EXPECT_DOUBLE_EQ(*r1->missing.psnr, kPsnrCap);
+  EXPECT_LT(*r1->missing.psnr_reflection, 20.0);  // the wrong guess shows in the reflection
 
   const RegionFigures* r2 = b.find("reflector:2");
   EXPECT_DOUBLE_EQ(*r2->traceable.coverage, 0.0);
   EXPECT_EQ(r2->hits.missed, 1u);
+  // The claimed sky pixel reflects what the truth does: a correct claim, no false hit.
   const RegionFigures* other = b.find("other");
-  EXPECT_DOUBLE_EQ(*other->sky.false_hit_rate, 1.0);
+  EXPECT_DOUBLE_EQ(*other->sky.false_hit_rate, 0.0);
+  EXPECT_EQ(other->hits.correct, 2u);  // its traceable pixel (3,0) and the sky pixel
   const RegionFigures* all = b.find("all");
   EXPECT_EQ(all->hits.correct + all->hits.false_hits + all->hits.missed + all->hits.correct_miss, 12u);
   // A wrong colour on a claimed traceable pixel is a false hit, not a correct one.
