@@ -66,54 +66,47 @@ void main() {
     imageStore(out_stats, p, vec4(0.0));
     return;
   }
-  // The 3x3 neighbourhood's mean and spread (reflective neighbours only).
+  // The 3x3 neighbourhood's mean and spread (clamped at the image's edges).
   vec4 m1 = vec4(0.0), m2 = vec4(0.0);
-  float count = 0.0;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
-      ivec2 q = clamp(p + ivec2(x, y), ivec2(0), ivec2(frame.viewport.xy) - 1);
-      vec4 s = texelFetch(current_tex, q, 0);
+      vec4 s = texelFetch(current_tex, clamp(p + ivec2(x, y), ivec2(0), ivec2(frame.viewport.xy) - 1), 0);
       m1 += s;
       m2 += s * s;
-      count += 1.0;
     }
-  vec4 mean = m1 / count;
-  vec4 sigma = sqrt(max(m2 / count - mean * mean, vec4(0.0)));
+  vec4 mean = m1 / 9.0;
+  vec4 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec4(0.0)));
 
   bool valid = frame.time.z > 0.5;
   vec3 world = view_to_world_pos(g.pos_vs);
-  vec2 uv_surface, uv_parallax;
-  float depth_surface, depth_unused;
-  // Surface: the motion vector (moving objects included); its expected depth from the camera.
-  uv_surface = (vec2(p) + 0.5 + texelFetch(motion_tex, p, 0).xy) * frame.viewport.zw;
-  vec2 uv_expected;
-  bool surface_ok = valid && previous_uv(world, uv_expected, depth_surface) &&
-                    same_surface(uv_surface, g, depth_surface);
+  vec2 uv[2];
+  bool ok[2];
+  float expected_depth, unused_depth;
+  // Surface: the motion vector (moving objects included), checked against the depth the point
+  // had from last frame's camera.
+  uv[0] = (vec2(p) + 0.5 + texelFetch(motion_tex, p, 0).xy) * frame.viewport.zw;
+  vec2 unused_uv;
+  ok[0] = valid && previous_uv(world, unused_uv, expected_depth) && same_surface(uv[0], g, expected_depth);
   // Parallax: the reflected point's virtual image, mean hit length behind the surface along the
   // view ray.
   vec3 virtual_point = world + view_to_world_dir(normalize(g.pos_vs)) * stats.g;
-  bool parallax_ok = valid && stats.g > 0.0 && previous_uv(virtual_point, uv_parallax, depth_unused) &&
-                     same_surface(uv_parallax, g, -1.0);
+  ok[1] = valid && stats.g > 0.0 && previous_uv(virtual_point, uv[1], unused_depth) && same_surface(uv[1], g, -1.0);
 
+  // Of the valid candidates, the one whose history lies nearest this frame's neighbourhood
+  // (in its luminance spread); the surface one on a tie.
   vec4 history = vec4(0.0);
   vec2 history_stats_value = vec2(0.0);
   bool reprojected = false;
   float best = 1e30;
-  vec3 lum_w = vec3(0.2126, 0.7152, 0.0722);
-  float sigma_lum = max(dot(sigma.rgb, lum_w), 1e-4);
-  if (surface_ok) {
-    vec4 h = textureLod(history_tex, uv_surface, 0.0);
-    best = abs(dot(h.rgb - mean.rgb, lum_w)) / sigma_lum;
-    history = h;
-    history_stats_value = textureLod(history_stats, uv_surface, 0.0).rg;
-    reprojected = true;
-  }
-  if (parallax_ok) {
-    vec4 h = textureLod(history_tex, uv_parallax, 0.0);
-    float distance_to_mean = abs(dot(h.rgb - mean.rgb, lum_w)) / sigma_lum;
+  float sigma_lum = max(luminance(sigma.rgb), 1e-4);
+  for (int i = 0; i < 2; ++i) {
+    if (!ok[i]) continue;
+    vec4 h = textureLod(history_tex, uv[i], 0.0);
+    float distance_to_mean = abs(luminance(h.rgb - mean.rgb)) / sigma_lum;
     if (distance_to_mean < best) {
+      best = distance_to_mean;
       history = h;
-      history_stats_value = textureLod(history_stats, uv_parallax, 0.0).rg;
+      history_stats_value = textureLod(history_stats, uv[i], 0.0).rg;
       reprojected = true;
     }
   }

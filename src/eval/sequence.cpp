@@ -138,17 +138,13 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
         }
         if (pair) {
           const std::vector<float> map = excess_change_map(previous, now, before, s.reflected, run.reflected_before,
-                                                           scored->truth_reflected(), truth_reflected_before);
+                                                           scored->truth_reflected(), truth_reflected_before,
+                                                           &run.change);
           double sum = 0;
           std::size_t n = 0;
           for (float e : map)
             if (e >= 0.0f) sum += e, ++n, run.excess.push_back(e);
           if (n) r.instability = sum / static_cast<double>(n);
-          const ChangeTotals c = change_totals(previous, now, before, s.reflected, run.reflected_before,
-                                               scored->truth_reflected(), truth_reflected_before);
-          run.change.technique += c.technique;
-          run.change.truth += c.truth;
-          run.change.pixels += c.pixels;
           for (const Region& region : frame_regions(scored->labels())) {
             const std::string name = region.name();
             auto it = std::find_if(run.region_excess.begin(), run.region_excess.end(),

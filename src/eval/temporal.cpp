@@ -43,44 +43,36 @@ float change(const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_
   return s / 3.0f;
 }
 
-// The pixel `now` pixel i was in `before` when both do reflection work there, else -1.
-long measured_previous(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
-                       std::size_t i) {
-  if (previous[i] < 0 || !now.reflective[i]) return -1;
-  return before.reflective[static_cast<std::size_t>(previous[i])] ? previous[i] : -1;
-}
-
 }  // namespace
+
+std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
+                                     const TemporalFrame& before, const RgbaImageF& technique_now,
+                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                     const RgbaImageF& truth_before, ChangeTotals* totals) {
+  std::vector<float> out(previous.size(), -1.0f);
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0 || !now.reflective[i]) continue;
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (!before.reflective[j]) continue;
+    const float moved = change(technique_now, i, technique_before, j), truth = change(truth_now, i, truth_before, j);
+    // A non-finite image is flicker without bound; the metric must not hide it as NaN.
+    const float excess = moved - truth;
+    out[i] = std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f;
+    if (totals) {
+      totals->technique += std::isfinite(moved) ? moved : 1.0;
+      totals->truth += truth;
+      ++totals->pixels;
+    }
+  }
+  return out;
+}
 
 ChangeTotals change_totals(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
                            const RgbaImageF& technique_now, const RgbaImageF& technique_before,
                            const RgbaImageF& truth_now, const RgbaImageF& truth_before) {
   ChangeTotals t;
-  for (std::size_t i = 0; i < previous.size(); ++i) {
-    const long j = measured_previous(previous, now, before, i);
-    if (j < 0) continue;
-    const float a = change(technique_now, i, technique_before, static_cast<std::size_t>(j));
-    t.technique += std::isfinite(a) ? a : 1.0;
-    t.truth += change(truth_now, i, truth_before, static_cast<std::size_t>(j));
-    ++t.pixels;
-  }
+  excess_change_map(previous, now, before, technique_now, technique_before, truth_now, truth_before, &t);
   return t;
-}
-
-std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
-                                     const TemporalFrame& before, const RgbaImageF& technique_now,
-                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
-                                     const RgbaImageF& truth_before) {
-  std::vector<float> out(previous.size(), -1.0f);
-  for (std::size_t i = 0; i < previous.size(); ++i) {
-    const long jj = measured_previous(previous, now, before, i);
-    if (jj < 0) continue;
-    const auto j = static_cast<std::size_t>(jj);
-    const float excess = change(technique_now, i, technique_before, j) - change(truth_now, i, truth_before, j);
-    // A non-finite image is flicker without bound; the metric must not hide it as NaN.
-    out[i] = std::isfinite(excess) ? std::max(excess, 0.0f) : 1.0f;
-  }
-  return out;
 }
 
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,

@@ -34,11 +34,6 @@ std::vector<float> excess_change(const std::vector<int>& previous, const Tempora
                                  const TemporalFrame& before, const RgbaImageF& technique_now,
                                  const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                  const RgbaImageF& truth_before);
-// The same per pixel of `now` (-1 where it is not measured), for breakdowns by region.
-std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
-                                     const TemporalFrame& before, const RgbaImageF& technique_now,
-                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
-                                     const RgbaImageF& truth_before);
 
 // How much the technique's and the truth's images changed on the pixels excess_change measures:
 // sums of the per-pixel change (mean over RGB of display values). Their ratio says how much
@@ -50,6 +45,12 @@ struct ChangeTotals {
 ChangeTotals change_totals(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
                            const RgbaImageF& technique_now, const RgbaImageF& technique_before,
                            const RgbaImageF& truth_now, const RgbaImageF& truth_before);
+// excess_change per pixel of `now` (-1 where it is not measured), for breakdowns by region;
+// with `totals`, the change totals of the same pass added to it.
+std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
+                                     const TemporalFrame& before, const RgbaImageF& technique_now,
+                                     const RgbaImageF& technique_before, const RgbaImageF& truth_now,
+                                     const RgbaImageF& truth_before, ChangeTotals* totals = nullptr);
 
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.
