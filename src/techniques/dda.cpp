@@ -36,7 +36,7 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
 // gallery's floor at 1080p, 19% at 4K): the auto count covers the image diagonal.
 void resolve(P& p, const AutoContext& c) {
   if (p.max_steps == 0) p.max_steps = std::clamp(static_cast<int>(std::ceil(c.image_diagonal / p.stride)), 1, 8192);
-  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+  if (p.max_distance == 0.0f) p.max_distance = c.max_distance();
 }
 
 }  // namespace

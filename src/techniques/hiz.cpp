@@ -29,8 +29,8 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
 // The visits a ray needs grow with the resolution: 256 reached 98% of pedestal's wall mirror at
 // 640x360 but 47% at 1920x1080 (1024: 99.8%).
 void resolve(P& p, const AutoContext& c) {
-  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
-  if (p.max_iterations == 0) p.max_iterations = std::clamp(static_cast<int>(std::ceil(0.5f * c.image_diagonal)), 1, 4096);
+  if (p.max_distance == 0.0f) p.max_distance = c.max_distance();
+  if (p.max_iterations == 0) p.max_iterations = c.hiz_iterations();
 }
 
 class HizTechnique : public TracerTechnique<P> {

@@ -26,7 +26,7 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>({
 
 // 256 steps of 0.1 reached 25.6 m at most and left gallery 4.4 dB short of 4x finer steps.
 void resolve(P& p, const AutoContext& c) {
-  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+  if (p.max_distance == 0.0f) p.max_distance = c.max_distance();
   if (p.step_size == 0.0f) p.step_size = std::max(p.max_distance / static_cast<float>(p.max_steps), 0.001f);
 }
 

@@ -26,7 +26,7 @@ const std::vector<ParamDesc> kTable = with_ray_options<P>(
 // The paper's 9 m ray cannot reach gallery's back wall from its near floor, and a thickness
 // below the step lets the march step over surfaces: both adapt unless set.
 void resolve(P& p, const AutoContext& c) {
-  if (p.max_distance == 0.0f) p.max_distance = std::max(c.scene_diagonal, 0.01f);
+  if (p.max_distance == 0.0f) p.max_distance = c.max_distance();
   if (p.thickness == 0.0f)
     p.thickness = std::max(1.5f * p.max_distance / static_cast<float>(p.linear_steps), 0.01f * p.max_distance);
 }

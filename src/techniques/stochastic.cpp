@@ -15,7 +15,7 @@
 #include "shared/stochastic.h"
 #include "techniques/denoiser.h"
 #include "techniques/stochastic.h"
-#include "techniques/technique.h"
+#include "techniques/tracer.h"
 
 namespace ssr {
 namespace {
@@ -84,11 +84,15 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   void run(const FrameContext& in) override {
     P p = params_;
-    if (p.max_distance == 0.0f) p.max_distance = std::max(in.scene_diagonal, 0.01f);
-    if (p.max_iterations == 0)
-      p.max_iterations = std::clamp(static_cast<int>(std::ceil(0.5 * std::hypot(double(in.width), double(in.height)))), 1, 4096);
+    const AutoContext autos = AutoContext::of(in);  // "auto" as `hiz` resolves it
+    if (p.max_distance == 0.0f) p.max_distance = autos.max_distance();
+    if (p.max_iterations == 0) p.max_iterations = autos.hiz_iterations();
     const auto tex = std::span<gl::Texture2D* const>(in.textures);
-    const shared::ClassifyParams c{p.roughness_threshold, p.quad_roughness, 1 << p.rays_per_quad, divisor(), {}};
+    const shared::ClassifyParams c{.roughness_threshold = p.roughness_threshold,
+                                   .quad_roughness = p.quad_roughness,
+                                   .rays_per_quad = 1 << p.rays_per_quad,  // the choice 0, 1, 2 is 1, 2, 4 rays
+                                   .divisor = divisor(),
+                                   .trace_size = {}};
     classifier_.classify(*tex[Denoiser::kClass], c, in.time.index, in.timer);
     {
       gl::ScopedPass pass(in.timer, "trace");

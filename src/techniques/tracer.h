@@ -1,6 +1,7 @@
 // The common shape of a screen-space tracer: a Params struct P that starts with the shared
 // RayOptions, one compute shader built on shaders/common/ssr_main.glsl, one dispatch.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -16,6 +17,13 @@ namespace ssr {
 struct AutoContext {
   float scene_diagonal = 0;  // world units: the diagonal of the scene's bounding box
   float image_diagonal = 0;  // pixels
+  static AutoContext of(const FrameContext& f) {
+    return {f.scene_diagonal, static_cast<float>(std::hypot(double(f.width), double(f.height)))};
+  }
+  // The tracers' "auto" ray length: the scene's bounding-box diagonal.
+  float max_distance() const { return std::max(scene_diagonal, 0.01f); }
+  // The Hi-Z traces' "auto" cap on cell visits (hiz, stochastic): half the image diagonal.
+  int hiz_iterations() const { return std::clamp(static_cast<int>(std::ceil(0.5f * image_diagonal)), 1, 4096); }
 };
 
 template <class P>
@@ -44,8 +52,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
   }
 
   void run(const FrameContext& in) override {
-    const P p = resolved({in.scene_diagonal,
-                          static_cast<float>(std::hypot(double(in.width), double(in.height)))});
+    const P p = resolved(AutoContext::of(in));
     if (!p.ray.denoise.enabled) {
       gl::ScopedPass pass(in.timer, this->name());
       this->bind_params(&p);
@@ -62,7 +69,9 @@ class TracerTechnique : public TechniqueWithParams<P> {
       denoise_loaded_ = true;
     }
     const auto tex = std::span<gl::Texture2D* const>(in.textures);
-    classifier_.classify(*tex[Denoiser::kClass], {1.0f, 1.0f, 4, 1, {}}, in.time.index, in.timer);
+    const shared::ClassifyParams every_pixel{
+        .roughness_threshold = 1.0f, .quad_roughness = 1.0f, .rays_per_quad = 4, .divisor = 1, .trace_size = {}};
+    classifier_.classify(*tex[Denoiser::kClass], every_pixel, in.time.index, in.timer);
     {
       gl::ScopedPass trace(in.timer, this->name());
       this->bind_params(&p);

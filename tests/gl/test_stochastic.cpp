@@ -72,7 +72,9 @@ class DenoiseProbe final : public TechniqueWithParams<shared::DenoiseParams> {
   }
   void run(const FrameContext& f) override {
     const auto tex = std::span<gl::Texture2D* const>(f.textures);
-    classifier_.classify(*tex[Denoiser::kClass], {1.0f, 1.0f, 4, 1, {}}, f.time.index, nullptr);
+    const shared::ClassifyParams every_pixel{
+        .roughness_threshold = 1.0f, .quad_roughness = 1.0f, .rays_per_quad = 4, .divisor = 1, .trace_size = {}};
+    classifier_.classify(*tex[Denoiser::kClass], every_pixel, f.time.index, nullptr);
     std::vector<float> rad(static_cast<std::size_t>(f.width) * f.height * 4), ray(rad.size());
     for (int y = 0; y < f.height; ++y)
       for (int x = 0; x < f.width; ++x) {
