@@ -14,6 +14,7 @@ layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;  // ste
 layout(binding = IMG_REFRACTION, rgba16f) uniform writeonly image2D out_refraction;
 layout(binding = TEX_GLASS_DEPTH) uniform sampler2D g_glass_depth;
 layout(binding = TEX_GLASS_SURFACE) uniform sampler2D g_glass_surface;
+#include "common/telemetry.glsl"
 #ifdef SSR_DENOISE_OUTPUT
 #include "common/denoise_common.glsl"
 #endif
@@ -21,9 +22,10 @@ layout(binding = TEX_GLASS_SURFACE) uniform sampler2D g_glass_surface;
 // Refraction (2012 blog): a transparent surface in front of this pixel refracts the view ray
 // with refract() instead of reflect() and traces it against the opaque depth buffer, which
 // holds what lies behind the glass. One ray, a single interface (thin-surface model).
-void trace_refraction(ivec2 p) {
+// Returns the ray's iterations (0 without a transparent surface).
+float trace_refraction(ivec2 p) {
   vec4 surface = texelFetch(g_glass_surface, p, 0);
-  if (surface.w < 1.0) { imageStore(out_refraction, p, vec4(0.0)); return; }
+  if (surface.w < 1.0) { imageStore(out_refraction, p, vec4(0.0)); return 0.0; }
   vec3 pos = view_position(pixel_to_uv(p), texelFetch(g_glass_depth, p, 0).r);
   vec3 n = normalize(surface.xyz);
   vec3 d = normalize(pos);
@@ -31,17 +33,17 @@ void trace_refraction(ivec2 p) {
   if (dot(dir, dir) < 1e-6) dir = reflect(d, n);  // total internal reflection
   TraceResult t = trace_ray(p, pos, normalize(dir), pixel_jitter(p, 0, params.ray.seed));
   imageStore(out_refraction, p, t.hit ? vec4(textureLod(lit_tex, t.uv, 0.0).rgb, 1.0) : vec4(0.0));
+  telemetry_ray(t.steps);
+  return t.steps;
 }
 
-void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
-  trace_refraction(p);
+// The reflection of pixel p; returns the iterations of all its rays.
+float reflect_pixel(ivec2 p) {
   GSample g = gbuffer_fetch(p);
   if (!is_reflective(g)) {
     imageStore(out_reflection, p, vec4(0.0));
     imageStore(out_debug, p, vec4(0.0));
-    return;
+    return 0.0;
   }
   RayOptions o = params.ray;
   float rough = o.roughness >= 0.0 ? o.roughness : g.roughness;
@@ -71,6 +73,7 @@ void main() {
                        reflection_pdf(g.n_vs, v, normalize(dir), rough));
 #endif
     steps += t.steps;
+    telemetry_ray(t.steps);
     if (!t.hit) continue;
     float w = 1.0;
     if (o.edge_fade != 0)
@@ -100,4 +103,13 @@ void main() {
   imageStore(out_reflection, p, vec4(rgb, confidence));
   imageStore(out_debug, p, vec4(steps / float(n), hits / float(n), hits > 0.0 ? dist / hits : 0.0, 1.0));
 #endif
+  return steps;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  bool inside = all(lessThan(p, ivec2(frame.viewport.xy)));
+  float iterations = 0.0;
+  if (inside) iterations = trace_refraction(p) + reflect_pixel(p);
+  telemetry_lanes(p, inside, iterations);
 }

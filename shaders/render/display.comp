@@ -5,6 +5,7 @@
 #include "shared/tonemap.h"
 #include "shared/display.h"
 #include "shared/classification.h"
+#include "shared/telemetry.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
@@ -18,6 +19,12 @@ layout(binding = TEX_GLASS_SURFACE) uniform sampler2D glass_surface_tex;
 layout(binding = TEX_REFRACTION) uniform sampler2D refraction_tex;
 layout(binding = TEX_MOTION) uniform sampler2D motion_tex;
 layout(binding = TEX_STAGE_VIEW) uniform sampler2D stage_tex;  // a stage view's texture (any size)
+// The telemetry views' per-pixel words (render/telemetry.h; bound only for those views).
+layout(std430, binding = SSBO_TELEMETRY) readonly buffer TelemetryBlock {
+  TelemetryHeader telemetry;
+  uint telemetry_hist[TELEMETRY_BINS];
+  uint telemetry_pixels[];
+};
 
 // Hue from an angle (radians), full saturation.
 vec3 hue(float a) {
@@ -87,6 +94,11 @@ void main() {
     else if (u_view == VIEW_RAY_LENGTH) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 20.0);
     else if (u_view == VIEW_VARIANCE) v = heat(sqrt(max(textureLod(stage_tex, pixel_to_uv(p), 0.0).r, 0.0)));
     else if (u_view == VIEW_HISTORY) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 32.0);
+    else if (u_view == VIEW_ITERATIONS || u_view == VIEW_IDLE_LANES) {
+      uint word = telemetry_pixels[p.y * int(telemetry.width) + p.x];
+      v = word == 0u ? vec3(0.0)
+                     : heat(u_view == VIEW_ITERATIONS ? float(telemetry_iterations(word)) / 128.0 : telemetry_idle(word));
+    }
     else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);

@@ -17,6 +17,7 @@
 #define SSBO_REF_MATERIALS 3   // reference: ReferenceMaterial[]
 #define SSBO_PPR_REFLECTORS 4  // ppr: PprReflector[] (shared/ppr.h)
 #define SSBO_TILES 5           // classification: TileListHeader + packed trace tiles (shared/classification.h)
+#define SSBO_TELEMETRY 6       // instrumented builds: TelemetryHeader, histogram, per-pixel words (shared/telemetry.h)
 
 // Textures (texture units). The frame's resources:
 #define TEX_DEPTH 0             // D32F reversed-Z
@@ -29,7 +30,7 @@
 #define TEX_EMISSION 7          // RGBA16F emitted radiance (G-buffer)
 #define TEX_ALBEDO_MAP 8        // material albedo texture (G-buffer draw)
 #define TEX_NORMAL_MAP 9        // material normal map (G-buffer draw)
-#define TEX_HIZ 10              // R32F Hi-Z pyramid, max (= closest, reversed-Z) depth per cell
+#define TEX_HIZ 10              // RG32F Hi-Z pyramid: max (= closest, reversed-Z) and min (farthest) depth per cell
 #define TEX_BACK_DEPTH 11       // D32F depth of the nearest back faces (techniques that ask)
 #define TEX_DEBUG 12            // RGBA16F technique debug image (display.comp reads its views)
 #define TEX_GLASS_DEPTH 13      // D32F nearest transparent surface (else the opaque depth)

@@ -27,4 +27,6 @@
 #define VIEW_TEMPORAL 21    // after temporal accumulation, tone mapped
 #define VIEW_VARIANCE 22    // luminance variance estimate (r), sqrt as a heat map (0 .. 1)
 #define VIEW_HISTORY 23     // frames accumulated (g), heat map (0 .. 32)
-#define VIEW_COUNT 24
+#define VIEW_ITERATIONS 24  // telemetry: the lane's iterations over all its rays, heat map (0 .. 128+)
+#define VIEW_IDLE_LANES 25  // telemetry: the idle share of the pixel's warp, heat map (0 .. 1)
+#define VIEW_COUNT 26

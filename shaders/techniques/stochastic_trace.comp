@@ -9,6 +9,7 @@
 #include "common/hiz_trace.glsl"
 #include "common/blue_noise.glsl"
 #include "common/denoise_common.glsl"
+#include "common/telemetry.glsl"
 #include "shared/stochastic.h"
 
 layout(local_size_x = CLASSIFY_TILE, local_size_y = CLASSIFY_TILE) in;
@@ -44,6 +45,7 @@ void main() {
   int d = params.half_resolution != 0 ? 2 : 1;
   ivec2 p = t * d + (d == 2 ? quad_offset(frame.counts.z) : ivec2(0));
   bool traces = all(lessThan(p, ivec2(frame.viewport.xy))) && pixel_class_at(class_tex, p) == CLASS_TRACED;
+  float iterations = 0.0;
   if (traces) {
     GSample g = gbuffer_fetch(p);
     vec3 v = -normalize(g.pos_vs);
@@ -60,7 +62,10 @@ void main() {
     imageStore(out_radiance, t, radiance);
     imageStore(out_ray, t, vec4(l * (r.hit ? r.distance : RAY_MISS_LENGTH), pdf));
     atomicAdd(group_rays, 1u);
+    iterations = r.steps;
+    telemetry_ray(r.steps);
   }
+  telemetry_lanes(p, traces, iterations);
   barrier();
   if (gl_LocalInvocationIndex == 0u && group_rays > 0u) atomicAdd(header.rays, group_rays);
 }

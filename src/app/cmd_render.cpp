@@ -110,7 +110,10 @@ int run_render(const RenderOptions& o) {
   gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   Renderer renderer(scene, w, h, shaders);
   renderer.settings.exposure = o.exposure;
-  technique->load(renderer.shaders());
+  // The telemetry views show what an instrumented build of the technique recorded.
+  const bool telemetry_view = view_info(view).telemetry;
+  technique->load(telemetry_view ? renderer.shaders().with_defines({"SSR_TELEMETRY"}) : renderer.shaders());
+  if (telemetry_view) renderer.telemetry().begin(w, h);
 
   if (hits_view) {
     reference->load(renderer.shaders());
@@ -152,6 +155,12 @@ int run_render(const RenderOptions& o) {
   std::printf("wrote %s (%dx%d, scene %s, technique %s, view %s); %s ms %.2f:%s\n",
               o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), o.view.c_str(),
               timer.clock_name(), total, passes.c_str());
+  if (telemetry_view) {
+    if (const auto s = renderer.telemetry().read().stats())
+      std::printf("telemetry: %llu rays, iterations mean %.1f p50 %d p95 %d max %d, idle lanes %.1f%%\n",
+                  static_cast<unsigned long long>(s->rays), s->mean, s->p50, s->p95, s->max,
+                  s->idle_lanes.value_or(0.0) * 100.0);
+  }
   if (bad) {
     std::fprintf(stderr, "ssrlab: %zu non-finite values in the reflection/colour targets.\n", bad);
     return 1;

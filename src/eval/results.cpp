@@ -64,9 +64,23 @@ nlohmann::json technique_json(const TechniqueResult& r) {
       {"time_over_floor", time_over_floor(r)},
       {"error", error_json(r.error)},
       {"regions", breakdown_json(r.breakdown)},
+      {"telemetry", telemetry_json(r.telemetry)},
       {"nonfinite", r.error.nonfinite},
   };
 }
+
+}  // namespace
+
+nlohmann::json telemetry_json(const std::optional<IterationStats>& t) {
+  if (!t) return nullptr;
+  return nlohmann::json{
+      {"rays", t->rays},
+      {"iterations", {{"mean", t->mean}, {"p50", t->p50}, {"p95", t->p95}, {"max", t->max}}},
+      {"idle_lanes", optional_json(t->idle_lanes)},
+  };
+}
+
+namespace {
 
 
 // The run without device and revision.

@@ -11,6 +11,7 @@
 
 #include "eval/breakdown.h"
 #include "eval/metrics.h"
+#include "render/telemetry.h"
 
 namespace ssr {
 
@@ -42,6 +43,7 @@ struct TechniqueResult {
   double floor_ms = 0;              // the floor pass (DESIGN §6)
   ErrorMetrics error;
   Breakdown breakdown;              // per region and class (empty: not scored)
+  std::optional<IterationStats> telemetry;  // one instrumented frame; none: the technique does not iterate
 };
 
 struct RunResults {  // one scene at one size
@@ -85,6 +87,9 @@ nlohmann::json optional_json(const std::optional<double>& v);
 nlohmann::json device_json(const DeviceInfo& d);
 // The "error" object of one result (pooled figures).
 nlohmann::json error_json(const ErrorMetrics& e);
+// The "telemetry" object of one result: {"rays", "iterations": {mean, p50, p95, max},
+// "idle_lanes"}; null without telemetry.
+nlohmann::json telemetry_json(const std::optional<IterationStats>& t);
 // The "regions" object of one result (README: results JSON).
 nlohmann::json breakdown_json(const Breakdown& b);
 

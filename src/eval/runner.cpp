@@ -221,7 +221,18 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.result.floor_ms = floor_ms;
   ev.result.error = ev.score.error;
   ev.result.breakdown = ev.score.breakdown;
+  if (t->declare().telemetry) ev.result.telemetry = measure_telemetry(renderer, camera, variant);
   return ev;
+}
+
+std::optional<IterationStats> measure_telemetry(Renderer& renderer, const Camera& camera, const Variant& variant) {
+  auto t = create_technique(variant.technique);
+  apply_assignments(*t, variant.assignments);
+  if (!t->declare().telemetry) return std::nullopt;
+  t->load(renderer.shaders().with_defines({"SSR_TELEMETRY"}));
+  renderer.telemetry().begin(renderer.width(), renderer.height());
+  renderer.render(FrameRequest(camera, FrameTime{1, 0.0f}), *t, ViewMode::Final, nullptr);
+  return renderer.telemetry().read().stats();
 }
 
 OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar) {

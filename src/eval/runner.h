@@ -95,7 +95,12 @@ class FloorPass {
   gl::Program program_;
 };
 
-// Creates the variant's technique, scores it on `frame` and times it: one row of results.
+// One frame of the variant with its shaders instrumented (SSR_TELEMETRY): per-ray iterations
+// and idle lanes (render/telemetry.h). None for a technique that records no telemetry.
+std::optional<IterationStats> measure_telemetry(Renderer& renderer, const Camera& camera, const Variant& variant);
+
+// Creates the variant's technique, scores it on `frame` and times it: one row of results
+// (with its telemetry).
 struct EvaluatedVariant {
   TechniqueResult result;
   ScoredFrame::Score score;

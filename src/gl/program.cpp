@@ -16,6 +16,12 @@ namespace ssr::gl {
 
 ShaderSource::ShaderSource(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {}
 
+ShaderSource ShaderSource::with_defines(std::vector<std::string> defines) const {
+  ShaderSource out = *this;
+  out.defines_.insert(out.defines_.end(), defines.begin(), defines.end());
+  return out;
+}
+
 std::string ShaderSource::read(const std::string& path) const {
   if (dir_) {
     std::ifstream in(*dir_ / path, std::ios::binary);
@@ -64,6 +70,7 @@ std::string ShaderSource::expand(const std::string& path, const std::vector<std:
                                  std::vector<std::string>& files) const {
   std::ostringstream out;
   out << "#version 450 core\n";
+  for (const std::string& d : defines_) out << "#define " << d << "\n";
   for (const std::string& d : defines) out << "#define " << d << "\n";
   std::set<std::string> seen;
   files.clear();

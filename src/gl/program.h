@@ -19,6 +19,8 @@ class ShaderSource {
  public:
   // Embedded copy (default) or, with a directory, files read from disk on every load.
   explicit ShaderSource(std::optional<std::filesystem::path> dir = std::nullopt);
+  // A copy whose every program also gets `defines` (e.g. SSR_TELEMETRY: an instrumented build).
+  ShaderSource with_defines(std::vector<std::string> defines) const;
   // The text of one file; throws RuntimeError when it does not exist.
   std::string read(const std::string& path) const;
   // The expanded text of `path`, with `defines` ("NAME VALUE" or "NAME") inserted after #version.
@@ -28,6 +30,7 @@ class ShaderSource {
 
  private:
   std::optional<std::filesystem::path> dir_;
+  std::vector<std::string> defines_;  // added to every expand()
 };
 
 // Rewrites "0:12(5): error ..." / "0(12) : error ..." info-log lines to "file.glsl:12: error ...".

@@ -467,6 +467,7 @@ void Renderer::display_pass(ViewMode view, gl::PassTimer* timer) {
   for (const auto& [mode, id] : stage_views_)
     if (mode == view) stage = id;
   glBindTextureUnit(TEX_STAGE_VIEW, stage);
+  if (view_info(view).telemetry) telemetry_.bind_for(width_, height_);
   display_prog_.dispatch_2d(width_, height_);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);

@@ -23,6 +23,7 @@
 #include "render/hiz_pyramid.h"
 #include "render/targets.h"
 #include "render/technique_api.h"
+#include "render/telemetry.h"
 #include "render/views.h"
 #include "scene/scene.h"
 
@@ -95,6 +96,10 @@ class Renderer {
   // Binds the frame UBO, lights and every target at their named slots (shared/bindings.h).
   void bind_frame_inputs() const;
 
+  // What an instrumented technique (SSR_TELEMETRY) records: begin() it before rendering with
+  // one; the telemetry views show its per-pixel words.
+  TelemetryBuffer& telemetry() { return telemetry_; }
+
   RgbaImage8 read_display() const;
   RgbaImageF read_linear() const;              // the displayed view's linear values
   RgbaImageF read_texture(const gl::Texture2D& tex) const;  // any float-readable target
@@ -134,6 +139,7 @@ class Renderer {
 
   Scene scene_;
   gl::ShaderSource shaders_;
+  TelemetryBuffer telemetry_;
   std::unique_ptr<GpuScene> gpu_scene_;
   std::unique_ptr<Scene> posed_;  // the scene at posed_time_ (only for scenes with moving objects)
   float posed_time_ = 0;

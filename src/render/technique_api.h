@@ -73,6 +73,8 @@ struct TechniqueDecl {
   // Handles planar reflector pixels only (ppr without a fallback, the planar oracle): the
   // breakdown reports every other pixel as not handled instead of scoring what it leaves there.
   bool planar_only = false;
+  // Its shaders record per-ray telemetry when compiled with SSR_TELEMETRY (render/telemetry.h).
+  bool telemetry = false;
 };
 
 // When a frame is: its index in a sequence, its time, and whether a camera cut precedes it.

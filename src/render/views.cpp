@@ -30,6 +30,8 @@ const std::vector<ViewInfo>& view_table() {
       {ViewMode::Temporal, "temporal", "after temporal accumulation (rgb * confidence), tone mapped", true},
       {ViewMode::Variance, "variance", "luminance variance estimate: sqrt as a heat map (0 .. 1)", true},
       {ViewMode::History, "history", "frames accumulated, heat map (0 .. 32)", true},
+      {ViewMode::Iterations, "iterations", "telemetry: the pixel's trace iterations over all its rays, heat map (0 .. 128+)", true, true},
+      {ViewMode::IdleLanes, "idle-lanes", "telemetry: the share of lane-iterations idle in the pixel's 32-lane warp, heat map (0 .. 1)", true, true},
   };
   return table;
 }

@@ -15,6 +15,7 @@ enum class ViewMode : int {
   Holes = VIEW_HOLES, Reflected = VIEW_REFLECTED, Motion = VIEW_MOTION,
   Classes = VIEW_CLASSES, Raw = VIEW_RAW, RayLength = VIEW_RAY_LENGTH, Spatial = VIEW_SPATIAL,
   Temporal = VIEW_TEMPORAL, Variance = VIEW_VARIANCE, History = VIEW_HISTORY,
+  Iterations = VIEW_ITERATIONS, IdleLanes = VIEW_IDLE_LANES,
 };
 
 struct ViewInfo {
@@ -24,6 +25,9 @@ struct ViewInfo {
   // A view of the technique debug image: offered only for techniques that declare it
   // (TechniqueDecl::debug_views); every other view exists for every technique.
   bool debug;
+  // Shown from the per-ray telemetry (render/telemetry.h): the technique runs instrumented
+  // (SSR_TELEMETRY) with a TelemetryBuffer bound. Offered for techniques that record it.
+  bool telemetry = false;
 };
 // Every view, in ViewMode order.
 const std::vector<ViewInfo>& view_table();

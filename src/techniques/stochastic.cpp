@@ -79,6 +79,8 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     d.textures = Denoiser::textures(divisor());
     d.stage_views = denoiser_.stage_views(0, params_.denoise);
     for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
+    d.debug_views.insert(d.debug_views.end(), {ViewMode::Iterations, ViewMode::IdleLanes});
+    d.telemetry = true;
     return d;
   }
 

@@ -93,8 +93,9 @@ class TracerTechnique : public TechniqueWithParams<P> {
     d.reads = kReadGBuffer | kReadLit | kReadGlass | extra_reads_;
     if (this->params_.ray.backface_thickness != 0) d.reads |= kReadBackDepth;
     d.writes_refraction = true;
-    d.debug_views = {ViewMode::Steps, ViewMode::Hits, ViewMode::Distance};
+    d.debug_views = {ViewMode::Steps, ViewMode::Hits, ViewMode::Distance, ViewMode::Iterations, ViewMode::IdleLanes};
     d.blend = this->params_.ray.blend;
+    d.telemetry = true;
     if (this->params_.ray.denoise.enabled) {
       // Its second image holds the rays then: the stage views replace the step views.
       d.reads |= kReadMotion | kReadPrevDepth | kReadPrevNormal;
@@ -102,6 +103,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
       d.stage_views = denoiser_.stage_views(0, this->params_.ray.denoise);
       d.debug_views.clear();
       for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
+      d.debug_views.insert(d.debug_views.end(), {ViewMode::Iterations, ViewMode::IdleLanes});
     }
     return d;
   }
