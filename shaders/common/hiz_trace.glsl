@@ -7,8 +7,10 @@
 // where it reaches the cell's closest depth) until one pixel confirms the hit with the shared
 // thickness test. The in-front test uses the segment's smaller depth, so rays towards the camera
 // (depth growing) need no separate path. The traversal visits every cell the ray crosses, so it
-// needs no jitter.
-layout(binding = TEX_HIZ) uniform sampler2D hiz_tex;  // R32F, full mip chain
+// needs no jitter. A ray behind every surface of a cell by more than the thickness cannot hit
+// anything there either: it skips the cell and climbs too (the pyramid's min depth), so rays
+// passing behind objects do not walk them pixel by pixel.
+layout(binding = TEX_HIZ) uniform sampler2D hiz_tex;  // RG32F (closest, farthest), full mip chain
 
 // What one Hi-Z trace is allowed to do.
 struct HizTrace {
@@ -31,6 +33,14 @@ float cell_exit(vec2 o, vec2 inv_d, ivec2 c, int level, ivec2 size) {
   vec2 hi = mix((vec2(c) + 1.0) * s, frame.viewport.xy, equal(c, size - 1));  // last cell: to the edge
   vec2 t = (mix(lo, hi, greaterThan(inv_d, vec2(0.0))) - o) * inv_d;
   return min(t.x, t.y);
+}
+
+// The depth of a point `thickness` behind the farthest surface at reversed-Z depth `farthest`;
+// -1 (nothing is behind it) for the background.
+float depth_behind(float farthest, float thickness) {
+  if (farthest <= 0.0) return -1.0;
+  float z = view_z_from_depth(farthest) - thickness;
+  return frame.proj[3][2] / -z - frame.proj[2][2];  // depth = B / -z - A (frame.glsl)
 }
 
 TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
@@ -69,7 +79,8 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     ivec2 size = max(size0 >> level, ivec2(1));
     ivec2 c = hiz_cell(q, level, size);
     float t_exit = min(cell_exit(o.xy, inv_d, c, level, size), 1.0);
-    float closest = texelFetch(hiz_tex, c, level).r;
+    vec2 bounds = texelFetch(hiz_tex, c, level).rg;
+    float closest = bounds.x;
     float z_in = o.z + d.z * t, z_out = o.z + d.z * t_exit;
     if (min(z_in, z_out) > closest) {
       // In front of everything in the cell: skip it, try a coarser cell next.
@@ -83,6 +94,12 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
       // nothing here can be hit before that point.
       was_in_front = true;
       t = min(t + (closest - z_in) / d.z, t_exit);
+    } else if (!backfaces && max(z_in, z_out) < depth_behind(bounds.y, h.thickness)) {
+      // Behind everything in the cell by more than the thickness (the back-face mode's
+      // thickness varies per pixel: it descends instead).
+      t = t_exit + cross_t;
+      level = min(level + 1, top);
+      continue;
     }
     if (level > 0) {
       --level;

@@ -24,7 +24,7 @@ void HizPyramid::load(const gl::ShaderSource& src) {
 void HizPyramid::build(const gl::Texture2D& depth) {
   const int w = depth.width(), h = depth.height();
   if (!texture_ || texture_.width() != w || texture_.height() != h)
-    texture_ = gl::Texture2D("hiz depth pyramid", GL_R32F, w, h, /*levels=*/0);  // full chain
+    texture_ = gl::Texture2D("hiz depth pyramid", GL_RG32F, w, h, /*levels=*/0);  // full chain
   const auto sizes = hiz_level_sizes(w, h);
   // GL's mip chain is the same chain: floor halving down to 1x1.
   assert(static_cast<int>(sizes.size()) == texture_.levels());
@@ -32,7 +32,7 @@ void HizPyramid::build(const gl::Texture2D& depth) {
   for (int level = 0; level < texture_.levels(); ++level) {
     if (level == 1) glBindTextureUnit(TEX_HIZ, texture_.id());  // from now on, read the level below
     glProgramUniform1i(program_.id(), 0, level - 1);              // -1: copy the depth buffer
-    glBindImageTexture(IMG_OUT, texture_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(IMG_OUT, texture_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     const auto [lw, lh] = sizes[static_cast<std::size_t>(level)];
     program_.dispatch_2d(lw, lh);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the next level (and the trace) fetch this one

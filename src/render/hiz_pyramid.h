@@ -14,8 +14,9 @@ namespace ssr {
 // 2x..2x+1 (and 2x+2 for the last texel of an odd source), so no source row or column is lost.
 std::vector<std::pair<int, int>> hiz_level_sizes(int w, int h);
 
-// R32F pyramid with a full mip chain: level 0 = the depth buffer, level k+1 = the max
-// (reversed-Z: closest) over each texel's level-k footprint. One dispatch per level.
+// RG32F pyramid with a full mip chain: level 0 = the depth buffer (in both channels), level
+// k+1 = the max (reversed-Z: closest; r) and the min (farthest; g) over each texel's level-k
+// footprint. One dispatch per level.
 class HizPyramid {
  public:
   // Builds the program (shaders/render/hiz_pyramid.comp); throws on a compile error.

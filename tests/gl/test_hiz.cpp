@@ -1,5 +1,5 @@
-// `hiz`: the depth pyramid against a CPU max-reduction (odd sizes), and the trace's error
-// against linear-binary's brute-force march.
+// `hiz`: the depth pyramid against a CPU max- and min-reduction (odd sizes), and the trace's
+// error against linear-binary's brute-force march.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,9 +14,10 @@ using namespace ssr;
 
 namespace {
 
-// The reference reduction: texel (x, y) of the next level is the max over source texels
-// 2x..2x+1 (to the source's last one for the last texel), the same for y.
-std::vector<float> cpu_reduce(const std::vector<float>& src, int sw, int sh, int w, int h) {
+// The reference reduction: texel (x, y) of the next level is the max (or min) over source
+// texels 2x..2x+1 (to the source's last one for the last texel), the same for y.
+template <class Op>
+std::vector<float> cpu_reduce(const std::vector<float>& src, int sw, int sh, int w, int h, Op op) {
   std::vector<float> out(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -24,7 +25,7 @@ std::vector<float> cpu_reduce(const std::vector<float>& src, int sw, int sh, int
       float m = src[static_cast<std::size_t>(2 * y) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(2 * x)];
       for (int v = 2 * y; v <= std::min(y1, sh - 1); ++v)
         for (int u = 2 * x; u <= std::min(x1, sw - 1); ++u)
-          m = std::max(m, src[static_cast<std::size_t>(v) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(u)]);
+          m = op(m, src[static_cast<std::size_t>(v) * static_cast<std::size_t>(sw) + static_cast<std::size_t>(u)]);
       out[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] = m;
     }
   return out;
@@ -52,21 +53,31 @@ TEST(Hiz, PyramidMatchesCpuMaxReduction) {
   glFinish();
   const auto sizes = hiz_level_sizes(w, h);
   ASSERT_EQ(pyramid.texture().levels(), static_cast<int>(sizes.size()));
-  std::vector<float> want = depth;
+  std::vector<float> want_max = depth, want_min = depth;
   int sw = w, sh = h;
+  const auto max_op = [](float a, float b) { return std::max(a, b); };
+  const auto min_op = [](float a, float b) { return std::min(a, b); };
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const auto [lw, lh] = sizes[k];
-    if (k > 0) want = cpu_reduce(want, sw, sh, lw, lh);
+    if (k > 0) {
+      want_max = cpu_reduce(want_max, sw, sh, lw, lh, max_op);
+      want_min = cpu_reduce(want_min, sw, sh, lw, lh, min_op);
+    }
     sw = lw;
     sh = lh;
-    std::vector<float> got(want.size());
-    glGetTextureImage(pyramid.texture().id(), static_cast<GLint>(k), GL_RED, GL_FLOAT,
+    std::vector<float> got(want_max.size() * 2);  // (closest, farthest) per texel
+    glGetTextureImage(pyramid.texture().id(), static_cast<GLint>(k), GL_RG, GL_FLOAT,
                       static_cast<GLsizei>(got.size() * sizeof(float)), got.data());
-    std::size_t bad = 0;
-    for (std::size_t i = 0; i < got.size(); ++i) bad += std::memcmp(&got[i], &want[i], sizeof(float)) != 0;
-    EXPECT_EQ(bad, 0u) << "level " << k << " (" << lw << "x" << lh << ")";
+    std::size_t bad_max = 0, bad_min = 0;
+    for (std::size_t i = 0; i < want_max.size(); ++i) {
+      bad_max += std::memcmp(&got[2 * i], &want_max[i], sizeof(float)) != 0;
+      bad_min += std::memcmp(&got[2 * i + 1], &want_min[i], sizeof(float)) != 0;
+    }
+    EXPECT_EQ(bad_max, 0u) << "max, level " << k << " (" << lw << "x" << lh << ")";
+    EXPECT_EQ(bad_min, 0u) << "min, level " << k << " (" << lw << "x" << lh << ")";
   }
-  EXPECT_EQ(want[0], 1.0f);
+  EXPECT_EQ(want_max[0], 1.0f);
+  EXPECT_EQ(want_min[0], 0.0f);
   test::expect_no_gl_errors();
 }
 
