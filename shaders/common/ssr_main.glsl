@@ -7,6 +7,10 @@
 // SSR_DENOISE_OUTPUT (the tracer's `denoise` option) it writes the denoiser's inputs instead
 // (techniques/denoiser.h): premultiplied radiance at IMG_OUT and the first sample's ray (hit
 // vector, pdf) at IMG_OUT2, with samples that change every frame.
+//
+// Compiled with SSR_RAY_LIST (the tracers' `compact` option) it runs one lane per pixel of the
+// classification's ray list (render/classification.h), which already wrote the outputs of every
+// pixel without work; otherwise one lane per screen pixel.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
@@ -15,6 +19,14 @@ layout(binding = IMG_REFRACTION, rgba16f) uniform writeonly image2D out_refracti
 layout(binding = TEX_GLASS_DEPTH) uniform sampler2D g_glass_depth;
 layout(binding = TEX_GLASS_SURFACE) uniform sampler2D g_glass_surface;
 #include "common/telemetry.glsl"
+// Outside the #ifdef: an include expands once, before the preprocessor runs.
+#include "shared/classification.h"
+#ifdef SSR_RAY_LIST
+layout(std430, binding = SSBO_RAYS) readonly buffer Rays {
+  RayListHeader ray_header;
+  uint rays[];
+};
+#endif
 #ifdef SSR_DENOISE_OUTPUT
 #include "common/denoise_common.glsl"
 #endif
@@ -107,8 +119,14 @@ float reflect_pixel(ivec2 p) {
 }
 
 void main() {
+#ifdef SSR_RAY_LIST
+  uint i = gl_WorkGroupID.x * uint(RAY_LIST_GROUP) + gl_LocalInvocationIndex;
+  bool inside = i < ray_header.count;
+  ivec2 p = inside ? unpack_texel(rays[i]) : ivec2(0);
+#else
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(p, ivec2(frame.viewport.xy)));
+#endif
   float iterations = 0.0;
   if (inside) iterations = trace_refraction(p) + reflect_pixel(p);
   telemetry_lanes(p, inside, iterations);

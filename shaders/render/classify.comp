@@ -1,6 +1,12 @@
 // Tile classification (src/render/classification.h): one invocation per trace texel, one work
-// group per tile. Each invocation classifies the pixels its texel stands for (1 or 2x2) and the
-// group appends its tile to the list when any of its texels traces.
+// group per tile. Each invocation classifies the pixels its texel stands for (1 or 2x2); the
+// group appends its tile to the tile list when any of its texels traces, and its tracing texels
+// to the ray list.
+//
+// Built with CLASSIFY_FOR_TRACER (a tracer's own trace, render/classification.h): no class
+// image; a pixel without work gets here what the tracer would have written there (nothing
+// reflected, no debug values), so the trace runs on the ray list alone. With list_glass, pixels
+// behind glass are listed too (the tracers refract), and the others get no refraction here.
 #include "common/gbuffer.glsl"
 #include "shared/classification.h"
 
@@ -10,9 +16,22 @@ layout(std430, binding = SSBO_TILES) buffer Tiles {
   TileListHeader header;
   uint tiles[];
 };
+layout(std430, binding = SSBO_RAYS) buffer Rays {
+  RayListHeader ray_header;
+  uint rays[];
+};
+layout(binding = TEX_GLASS_SURFACE) uniform sampler2D glass_surface_tex;  // read with list_glass only
+#ifdef CLASSIFY_FOR_TRACER
+layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
+layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;
+#else
 layout(binding = IMG_OUT, r8) uniform writeonly image2D out_class;
+#endif
+layout(binding = IMG_REFRACTION, rgba16f) uniform writeonly image2D out_refraction;  // with list_glass
 
 shared bool tile_traces;
+shared uint group_rays;
+shared uint group_base;
 
 // CLASS_TRACED here means "may trace"; main() decides which of those do this frame.
 uint pixel_class(ivec2 p, out float roughness) {
@@ -24,10 +43,13 @@ uint pixel_class(ivec2 p, out float roughness) {
 }
 
 void main() {
-  if (gl_LocalInvocationIndex == 0u) tile_traces = false;
+  if (gl_LocalInvocationIndex == 0u) {
+    tile_traces = false;
+    group_rays = 0u;
+  }
   barrier();
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
-  bool traces = false;
+  bool traces = false, listed = false;
   if (all(lessThan(t, params.trace_size.xy))) {
     int d = params.divisor;
     ivec2 chosen = t * d + params.trace_size.zw;
@@ -46,13 +68,34 @@ void main() {
                                quad_traces(p, frame_index, params.rays_per_quad));
           if (own) traces = true; else c = CLASS_REUSED;
         }
+        bool glass = params.list_glass != 0 && texelFetch(glass_surface_tex, p, 0).w >= 1.0;
+        bool pixel_listed = c == CLASS_TRACED || glass;
+        listed = listed || pixel_listed;
+#ifdef CLASSIFY_FOR_TRACER
+        if (!pixel_listed) {
+          imageStore(out_reflection, p, vec4(0.0));
+          imageStore(out_debug, p, vec4(0.0));
+        }
+#else
         imageStore(out_class, p, vec4(float(c) / CLASS_LEVELS));
+#endif
+        if (params.list_glass != 0 && !pixel_listed) imageStore(out_refraction, p, vec4(0.0));
       }
   }
+  uint slot = 0u;
   if (traces) tile_traces = true;
+  if (listed) slot = atomicAdd(group_rays, 1u);
   barrier();
-  if (gl_LocalInvocationIndex == 0u && tile_traces) {
-    uint slot = atomicAdd(header.groups_x, 1u);
-    tiles[slot] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16u);
+  if (gl_LocalInvocationIndex == 0u) {
+    if (tile_traces) {
+      uint tile_slot = atomicAdd(header.groups_x, 1u);
+      tiles[tile_slot] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16u);
+    }
+    if (group_rays > 0u) {
+      group_base = atomicAdd(ray_header.count, group_rays);
+      atomicMax(ray_header.groups_x, (group_base + group_rays + uint(RAY_LIST_GROUP) - 1u) / uint(RAY_LIST_GROUP));
+    }
   }
+  barrier();
+  if (listed) rays[group_base + slot] = pack_texel(t);
 }

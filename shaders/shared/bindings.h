@@ -18,6 +18,7 @@
 #define SSBO_PPR_REFLECTORS 4  // ppr: PprReflector[] (shared/ppr.h)
 #define SSBO_TILES 5           // classification: TileListHeader + packed trace tiles (shared/classification.h)
 #define SSBO_TELEMETRY 6       // instrumented builds: TelemetryHeader, histogram, per-pixel words (shared/telemetry.h)
+#define SSBO_RAYS 7            // classification: RayListHeader + packed texels (shared/classification.h)
 
 // Textures (texture units). The frame's resources:
 #define TEX_DEPTH 0             // D32F reversed-Z

@@ -1,6 +1,6 @@
 // The tile classification (render/classification.h), a frame service for tracers that trace a
-// subset of pixels through an indirect dispatch: which pixels get a ray this frame, and the list
-// of trace tiles that hold at least one.
+// subset of pixels through an indirect dispatch: which pixels get a ray this frame, the list of
+// trace tiles that hold at least one, and the list of the texels themselves (the ray list).
 #pragma once
 #include "shared/interop.h"
 
@@ -10,6 +10,7 @@
 #define CLASS_REUSED 3u       // reflective, no ray of its own this frame: neighbours' rays fill it
 #define CLASS_LEVELS 3.0      // the class texture (R8) stores class / CLASS_LEVELS
 #define CLASSIFY_TILE 8       // a tile is CLASSIFY_TILE^2 trace texels: one trace work group
+#define RAY_LIST_GROUP 64     // lanes of a work group that traces the ray list
 
 SSR_SHARED_BEGIN
 
@@ -19,6 +20,8 @@ struct ClassifyParams {
   int rays_per_quad;          // 1, 2 or 4: rays per 2x2 quad above quad_roughness
   int divisor;                // 1: a trace texel per pixel; 2: per 2x2 block (half resolution)
   ivec4 trace_size;           // xy: the trace grid's size; zw: this frame's pixel of a 2x2 block
+  int list_glass;             // 1: pixels behind a transparent surface join the ray list (they refract)
+  int pad0, pad1, pad2;
 };
 
 // The trace grid's texel t stands for pixel t * divisor + offset (offset: the frame's pixel of
@@ -45,5 +48,17 @@ struct TileListHeader {
   uint groups_z;
   uint rays;      // rays the trace cast (it counts them)
 };
+
+// The ray list: an indirect dispatch's arguments (RAY_LIST_GROUP lanes a group), then one
+// packed trace texel (x | y << 16) per lane, a tile's texels next to each other.
+struct RayListHeader {
+  uint groups_x;  // ceil(count / RAY_LIST_GROUP)
+  uint groups_y;
+  uint groups_z;
+  uint count;     // texels listed
+};
+
+SSR_FN uint pack_texel(ivec2 t) { return uint(t.x) | (uint(t.y) << 16u); }
+SSR_FN ivec2 unpack_texel(uint v) { return ivec2(int(v & 0xffffu), int(v >> 16u)); }
 
 SSR_SHARED_END

@@ -7,6 +7,7 @@ namespace ssr {
 
 void TileClassifier::load(const gl::ShaderSource& src) {
   program_ = gl::Program::compute(src, "render/classify.comp");
+  tracer_program_ = gl::Program::compute(src, "render/classify.comp", {"CLASSIFY_FOR_TRACER"});
 }
 
 glm::ivec2 TileClassifier::trace_size(int w, int h, int divisor) {
@@ -19,22 +20,45 @@ void TileClassifier::classify(const gl::Texture2D& classes, shared::ClassifyPara
   const glm::ivec2 size = trace_size(classes.width(), classes.height(), p.divisor);
   const glm::ivec2 offset = p.divisor == 2 ? shared::quad_offset(frame_index) : glm::ivec2(0);
   p.trace_size = {size, offset};
-  const glm::ivec2 tiles = (size + CLASSIFY_TILE - 1) / CLASSIFY_TILE;
-  const std::size_t capacity = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
-  if (!tiles_ || capacity > tiles_capacity_) {
-    tiles_ = gl::make_buffer("classification tiles",
-                             static_cast<GLsizeiptr>(sizeof(shared::TileListHeader) + capacity * sizeof(std::uint32_t)));
-    tiles_capacity_ = capacity;
-  }
-  if (!params_) params_ = gl::make_buffer("classification params", sizeof(shared::ClassifyParams));
-  glNamedBufferSubData(params_.id(), 0, sizeof(p), &p);
-  const shared::TileListHeader empty{0, 1, 1, 0};
-  glNamedBufferSubData(tiles_.id(), 0, sizeof(empty), &empty);
-  glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PASS, params_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_TILES, tiles_.id());
+  prepare(size, p);
   glBindImageTexture(IMG_OUT, classes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
   program_.dispatch_2d(size.x, size.y);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void TileClassifier::classify_for_tracer(int width, int height, shared::ClassifyParams p, gl::PassTimer* timer) {
+  gl::ScopedPass pass(timer, "classify");
+  p.divisor = 1;
+  p.trace_size = {width, height, 0, 0};
+  prepare({width, height}, p);
+  tracer_program_.dispatch_2d(width, height);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void TileClassifier::prepare(glm::ivec2 size, const shared::ClassifyParams& p) {
+  const glm::ivec2 tiles = (size + CLASSIFY_TILE - 1) / CLASSIFY_TILE;
+  const std::size_t tile_capacity = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
+  if (!tiles_ || tile_capacity > tiles_capacity_) {
+    tiles_ = gl::make_buffer("classification tiles",
+                             static_cast<GLsizeiptr>(sizeof(shared::TileListHeader) + tile_capacity * sizeof(std::uint32_t)));
+    tiles_capacity_ = tile_capacity;
+  }
+  const std::size_t ray_capacity = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+  if (!rays_ || ray_capacity > rays_capacity_) {
+    rays_ = gl::make_buffer("classification rays",
+                            static_cast<GLsizeiptr>(sizeof(shared::RayListHeader) + ray_capacity * sizeof(std::uint32_t)));
+    rays_capacity_ = ray_capacity;
+  }
+  if (!params_) params_ = gl::make_buffer("classification params", sizeof(shared::ClassifyParams));
+  glNamedBufferSubData(params_.id(), 0, sizeof(p), &p);
+  const shared::TileListHeader no_tiles{0, 1, 1, 0};
+  glNamedBufferSubData(tiles_.id(), 0, sizeof(no_tiles), &no_tiles);
+  const shared::RayListHeader no_rays{0, 1, 1, 0};
+  glNamedBufferSubData(rays_.id(), 0, sizeof(no_rays), &no_rays);
+  glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PASS, params_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_TILES, tiles_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_RAYS, rays_.id());
 }
 
 void TileClassifier::bind() const {
@@ -45,6 +69,19 @@ void TileClassifier::bind() const {
 void TileClassifier::dispatch() const {
   bind();
   glDispatchComputeIndirect(0);
+}
+
+void TileClassifier::dispatch_rays() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_RAYS, rays_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, rays_.id());
+  glDispatchComputeIndirect(0);
+}
+
+shared::RayListHeader TileClassifier::read_ray_header() const {
+  shared::RayListHeader h{};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(rays_.id(), 0, sizeof(h), &h);
+  return h;
 }
 
 shared::TileListHeader TileClassifier::read_header() const {

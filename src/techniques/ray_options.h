@@ -44,6 +44,10 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
                     {"standard", "roberts"}}, offsetof(R, blend)));
   t.push_back(at({"seed", ParamType::Int, 0, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."},
                  offsetof(R, seed)));
+  t.push_back(at({"compact", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Trace only the pixels with work: the tile classification lists them (and those behind glass) "
+                  "and the trace runs one lane per listed pixel (indirect dispatch); off: one lane per screen pixel."},
+                 offsetof(R, compact)));
   for (const ParamDesc& d : denoise_options(base + offsetof(R, denoise), /*with_switch=*/true)) t.push_back(d);
   return t;
 }

@@ -1,7 +1,9 @@
 // The common shape of a screen-space tracer: a Params struct P that starts with the shared
-// RayOptions, one compute shader built on shaders/common/ssr_main.glsl, one dispatch.
+// RayOptions, one compute shader built on shaders/common/ssr_main.glsl, one dispatch (over the
+// classification's ray list, or every pixel), optionally followed by the denoiser.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -34,11 +36,14 @@ class TracerTechnique : public TechniqueWithParams<P> {
   TracerTechnique(std::string name, std::span<const ParamDesc> table, std::string shader, Resolver resolve = {})
       : TechniqueWithParams<P>(std::move(name), table), shader_(std::move(shader)), resolve_(std::move(resolve)) {}
 
-  // The denoising variant (and the denoiser) compile on first use: most runs never need them.
+  // The variant the current parameters run compiles here (so a compile error surfaces now); the
+  // others, the classifier and the denoiser on first use.
   void load(const gl::ShaderSource& src) override {
-    program_ = gl::Program::compute(src, shader_);
+    gl::Program p = compile(src, this->params_.ray.compact != 0, this->params_.ray.denoise.enabled != 0);
     src_ = src;
-    denoise_loaded_ = false;
+    for (gl::Program& v : programs_) v = gl::Program();
+    programs_[variant(this->params_.ray.compact != 0, this->params_.ray.denoise.enabled != 0)] = std::move(p);
+    classifier_loaded_ = denoiser_loaded_ = false;
   }
 
   // The parameters as this frame runs them: every "auto" resolved. The shared edge fade's auto
@@ -53,33 +58,41 @@ class TracerTechnique : public TechniqueWithParams<P> {
 
   void run(const FrameContext& in) override {
     const P p = resolved(AutoContext::of(in));
-    if (!p.ray.denoise.enabled) {
+    const bool compact = p.ray.compact != 0, denoise = p.ray.denoise.enabled != 0;
+    const gl::Program& program = program_for(compact, denoise);
+    if ((compact || denoise) && !classifier_loaded_) {
+      classifier_.load(src_);
+      classifier_loaded_ = true;
+    }
+    // Every reflective pixel traces (and every pixel behind glass refracts): the classification
+    // at threshold 1, one ray a pixel.
+    const shared::ClassifyParams every_pixel{.roughness_threshold = 1.0f, .quad_roughness = 1.0f, .rays_per_quad = 4,
+                                             .divisor = 1, .trace_size = {}, .list_glass = 1};
+    auto trace = [&] {
       gl::ScopedPass pass(in.timer, this->name());
       this->bind_params(&p);
+      if (compact) classifier_.dispatch_rays(); else program.dispatch_2d(in.width, in.height);
+    };
+    if (!denoise) {
       glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      program_.dispatch_2d(in.width, in.height);
+      if (compact) classifier_.classify_for_tracer(in.width, in.height, every_pixel, in.timer);
+      glUseProgram(program.id());
+      trace();
       return;
     }
-    // With the denoiser: every reflective pixel traces (the classes say which are), the trace
-    // writes the denoiser's inputs, the denoiser the reflection.
-    if (!denoise_loaded_) {
-      denoise_program_ = gl::Program::compute(src_, shader_, {"SSR_DENOISE_OUTPUT"});
-      classifier_.load(src_);
+    // With the denoiser: the trace writes the denoiser's inputs (the classes say which pixels
+    // hold some), the denoiser the reflection.
+    if (!denoiser_loaded_) {
       denoiser_.load(src_);
-      denoise_loaded_ = true;
+      denoiser_loaded_ = true;
     }
     const auto tex = std::span<gl::Texture2D* const>(in.textures);
-    const shared::ClassifyParams every_pixel{
-        .roughness_threshold = 1.0f, .quad_roughness = 1.0f, .rays_per_quad = 4, .divisor = 1, .trace_size = {}};
     classifier_.classify(*tex[Denoiser::kClass], every_pixel, in.time.index, in.timer);
-    {
-      gl::ScopedPass trace(in.timer, this->name());
-      this->bind_params(&p);
-      glBindImageTexture(IMG_OUT, tex[Denoiser::kTraceRadiance]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      glBindImageTexture(IMG_OUT2, tex[Denoiser::kTraceRay]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      denoise_program_.dispatch_2d(in.width, in.height);
-      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    }
+    glBindImageTexture(IMG_OUT, tex[Denoiser::kTraceRadiance]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(IMG_OUT2, tex[Denoiser::kTraceRay]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glUseProgram(program.id());
+    trace();
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     denoiser_.run(in, tex, p.ray.denoise, 1);
     in.rebind();
   }
@@ -112,12 +125,24 @@ class TracerTechnique : public TechniqueWithParams<P> {
   std::uint32_t extra_reads_ = 0;
 
  private:
+  static std::size_t variant(bool compact, bool denoise) { return (compact ? 1 : 0) + (denoise ? 2 : 0); }
+  gl::Program compile(const gl::ShaderSource& src, bool compact, bool denoise) const {
+    std::vector<std::string> defines;
+    if (compact) defines.push_back("SSR_RAY_LIST");
+    if (denoise) defines.push_back("SSR_DENOISE_OUTPUT");
+    return gl::Program::compute(src, shader_, defines);
+  }
+  const gl::Program& program_for(bool compact, bool denoise) {
+    gl::Program& p = programs_[variant(compact, denoise)];
+    if (!p) p = compile(src_, compact, denoise);
+    return p;
+  }
+
   std::string shader_;
   Resolver resolve_;
-  gl::Program program_;
   gl::ShaderSource src_;
-  bool denoise_loaded_ = false;
-  gl::Program denoise_program_;
+  std::array<gl::Program, 4> programs_;  // by variant(): every pixel / ray list, x plain / denoiser inputs
+  bool classifier_loaded_ = false, denoiser_loaded_ = false;
   TileClassifier classifier_;
   Denoiser denoiser_;
 };

@@ -18,6 +18,7 @@
 #include "shared/ppr.h"
 #include "shared/reference.h"
 #include "shared/stochastic.h"
+#include "shared/telemetry.h"
 
 using namespace ssr;
 namespace fs = std::filesystem;
@@ -49,6 +50,8 @@ const Layout kLayouts[] = {
     SSR_LAYOUT(ReferencePixel, "data.x", false),
     SSR_LAYOUT(ReferenceMaterial, "albedo_metallic.x", false),
     SSR_LAYOUT(TileListHeader, "rays", false),
+    SSR_LAYOUT(RayListHeader, "count", false),
+    SSR_LAYOUT(TelemetryHeader, "warps", false),
 };
 #undef SSR_LAYOUT
 
@@ -59,6 +62,7 @@ std::string layout_shader() {
       "#include \"shared/frame.h\"\n#include \"shared/ray_options.h\"\n#include \"shared/linear.h\"\n"
       "#include \"shared/linear_binary.h\"\n#include \"shared/dda.h\"\n#include \"shared/hiz.h\"\n"
       "#include \"shared/ppr.h\"\n#include \"shared/reference.h\"\n#include \"shared/stochastic.h\"\n"
+      "#include \"shared/telemetry.h\"\n#include \"shared/classification.h\"\n"
       "layout(local_size_x = 1) in;\nlayout(std430, binding = 0) buffer Sink { float sink; };\n";
   std::string body;
   int i = 0;
