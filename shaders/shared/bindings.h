@@ -59,12 +59,13 @@
 #define TEX_HISTORY 40          // denoiser: last frame's accumulated radiance (persistent)
 #define TEX_HISTORY_STATS 41    // denoiser: last frame's variance, history length (persistent)
 #define TEX_STAGE_VIEW 42       // display: the technique texture a stage view shows (TechniqueDecl::stage_views)
+#define TEX_PPR_PROJECTED 43    // ppr resolve: this frame's intermediate (r32ui), read as a texture
 
 // Images (image units; GL guarantees 8)
 #define IMG_OUT 0               // the running pass's main output
 #define IMG_OUT2 1              // its second output (techniques: the debug image)
 #define IMG_REFRACTION 2        // techniques write the refracted radiance of transparent pixels here
-#define IMG_PPR_INTERMEDIATE 3  // ppr: r32ui, cleared to PPR_EMPTY, written with imageAtomicMin
+#define IMG_PPR_INTERMEDIATE 3  // ppr: r32ui; project: written with imageAtomicMin; resolve: the other one, cleared to PPR_EMPTY
 #define IMG_MOTION 4            // the lighting pass writes the background's motion vectors
 #define IMG_REF_TRUTH 5         // reference: the truth's reflection
 #define IMG_REF_IDEAL 6         // reference: the screen-space ideal

@@ -1,5 +1,6 @@
-// PPR: empties the intermediate image (a compute pass: glClearTexImage measured 5x slower on
-// the NVIDIA driver for this r32ui image).
+// PPR: empties an intermediate image, on the first frame and after a reset only: afterwards each
+// frame's resolve empties the next frame's (a compute pass: glClearTexImage measured 5x slower
+// on the NVIDIA driver for this r32ui image).
 #include "shared/ppr.h"
 #include "shared/ppr_packing.h"
 

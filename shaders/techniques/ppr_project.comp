@@ -35,17 +35,28 @@ void main() {
   vec3 x = view_to_world_pos(g.pos_vs);
   vec3 eye = frame.camera_pos.xyz;
   // Every reflector: a projection that misses one must not stop the others (DESIGN §10).
+  // Consecutive reflectors on one plane (a tiled floor) share the mirror image and where the
+  // camera sees it: computed once per plane, then only each rectangle is tested.
+  vec4 plane = vec4(0.0);
+  bool seen = false;  // `plane` holds a computed plane
+  vec3 hit = vec3(0.0);
+  bool crosses = false;  // the mirror image is visible through the plane (at `hit`)
   for (int k = 0; k < params.reflector_count; ++k) {
     PprReflector r = reflectors[k];
-    vec3 n = r.plane.xyz;
-    float dist = dot(n, x) + r.plane.w;
-    if (dist <= 0.0 || uint(k + 1) == g.reflector) continue;  // behind the mirror, or on it
-    vec3 mirrored = x - 2.0 * dist * n;
-    // The camera ray towards the mirror image crosses the plane at t in (0, 1).
-    float e = dot(n, eye) + r.plane.w;  // > 0: the technique orients planes towards the camera
-    float t = e / (e - dot(n, mirrored) - r.plane.w);
-    if (!(t > 0.0 && t < 1.0)) continue;
-    vec3 hit = eye + t * (mirrored - eye);
+    if (!seen || r.plane != plane) {
+      plane = r.plane;
+      seen = true;
+      vec3 n = r.plane.xyz;
+      float dist = dot(n, x) + r.plane.w;
+      vec3 mirrored = x - 2.0 * dist * n;
+      // The camera ray towards the mirror image crosses the plane at t in (0, 1); dist > 0: in
+      // front of the mirror.
+      float e = dot(n, eye) + r.plane.w;  // > 0: the technique orients planes towards the camera
+      float t = e / (e - dot(n, mirrored) - r.plane.w);
+      crosses = dist > 0.0 && t > 0.0 && t < 1.0;
+      hit = eye + t * (mirrored - eye);
+    }
+    if (!crosses || uint(k + 1) == g.reflector) continue;  // behind the mirror, or on it
     vec3 local = hit - r.center.xyz;
     if (abs(dot(local, r.tangent.xyz)) > r.tangent.w || abs(dot(local, r.bitangent.xyz)) > r.bitangent.w)
       continue;  // outside the rectangle

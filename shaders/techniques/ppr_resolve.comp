@@ -1,5 +1,6 @@
 // PPR resolve pass: decode each reflector pixel's offset, patch holes from the neighbours, and
-// fetch the reflected colour at the (sub-pixel) source position. With a normal-mapped or rough
+// fetch the reflected colour at the (sub-pixel) source position. It also empties the other
+// intermediate image, the next frame's projection target: no clear pass. With a normal-mapped or rough
 // reflector, the thesis's approximation: keep the reflection distance of the mirror solution
 // and follow the perturbed (or GGX-sampled) reflection vector that far, then reproject.
 #include "common/gbuffer.glsl"
@@ -9,7 +10,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { PprParams params; };
-layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform readonly uimage2D intermediate;
+layout(binding = TEX_PPR_PROJECTED) uniform usampler2D projected;  // this frame's intermediate
+layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform writeonly uimage2D next_intermediate;  // emptied here
 layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprReflector reflectors[]; };
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
@@ -24,12 +26,13 @@ vec4 unserved(ivec2 p) { return u_fallback == 1 ? texelFetch(fallback_tex, p, 0)
 // The packed value at q, or PPR_EMPTY off screen.
 uint packed_at(ivec2 q) {
   if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(frame.viewport.xy)))) return PPR_EMPTY;
-  return imageLoad(intermediate, q).x;
+  return texelFetch(projected, q, 0).x;
 }
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
+  imageStore(next_intermediate, p, uvec4(PPR_EMPTY));
   GSample g = gbuffer_fetch(p);
   if (!is_reflective(g) || g.reflector == 0u) {
     imageStore(out_reflection, p, is_reflective(g) ? unserved(p) : vec4(0.0));

@@ -52,7 +52,8 @@ class PprTechnique final : public TechniqueWithParams<P> {
     TechniqueDecl d;
     d.reads = kReadGBuffer | kReadLit | kReadReflectors;
     d.debug_views = {ViewMode::Offsets, ViewMode::Holes};
-    d.textures = {{"intermediate", GL_R32UI}};
+    // Two intermediates used in turn: the resolve empties the one the next frame projects into.
+    d.textures = {{"intermediate 0", GL_R32UI, 1, true}, {"intermediate 1", GL_R32UI, 1, true}};
     if (params_.fallback != 0) {
       const TechniqueDecl f = fallback_technique().declare();
       d.reads |= f.reads;
@@ -82,8 +83,15 @@ class PprTechnique final : public TechniqueWithParams<P> {
     }
     params_.reflector_count = static_cast<int>(refl.size());
     if (refl.empty()) refl.push_back({});  // a buffer must have storage
-    reflectors_ = gl::make_buffer("ppr reflectors", static_cast<GLsizeiptr>(refl.size() * sizeof(refl[0])), refl.data(), 0);
-    gl::Texture2D& intermediate = *in.textures[0];
+    const std::size_t bytes = refl.size() * sizeof(refl[0]);
+    if (bytes > reflectors_bytes_) {
+      reflectors_ = gl::make_buffer("ppr reflectors", static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+      reflectors_bytes_ = bytes;
+    }
+    glNamedBufferSubData(reflectors_.id(), 0, static_cast<GLsizeiptr>(bytes), refl.data());
+    gl::Texture2D& intermediate = *in.textures[parity_];
+    gl::Texture2D& next = *in.textures[1 - parity_];
+    parity_ = 1 - parity_;
     const GLuint bits = shared::ppr_fraction_bits(static_cast<GLuint>(in.width), static_cast<GLuint>(in.height));
 
     // The hybrid: the fallback tracer first (over the whole frame, for now), into its own image.
@@ -94,35 +102,42 @@ class PprTechnique final : public TechniqueWithParams<P> {
         fallback_loaded_ = true;
       }
       FrameContext f = in;
-      f.reflection = in.textures[1];
+      f.reflection = in.textures[2];
       f.textures.clear();
       fallback.run(f);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glBindTextureUnit(TEX_PPR_FALLBACK, in.textures[1]->id());
+      glBindTextureUnit(TEX_PPR_FALLBACK, in.textures[2]->id());
     }
 
     bind_params();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
     glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    {
+    if (!emptied_) {  // first frame, or the frame zeroed the textures (reset)
       gl::ScopedPass pass(in.timer, "ppr clear");
       clear_.dispatch_2d(in.width, in.height);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     {
       gl::ScopedPass pass(in.timer, "ppr project");
       glProgramUniform1ui(project_.id(), 0, bits);
       project_.dispatch_2d(in.width, in.height);
     }
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     {
       gl::ScopedPass pass(in.timer, "ppr resolve");
+      glBindTextureUnit(TEX_PPR_PROJECTED, intermediate.id());
+      glBindImageTexture(IMG_PPR_INTERMEDIATE, next.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
       glProgramUniform1ui(resolve_.id(), 0, bits);
       glProgramUniform1i(resolve_.id(), 1, params_.fallback != 0 ? 1 : 0);
       glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       resolve_.dispatch_2d(in.width, in.height);
+      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+    emptied_ = true;
   }
+
+  // The frame zeroed the intermediates (0 is a valid offset, not PPR_EMPTY).
+  void reset() override { emptied_ = false; }
 
  private:
   gl::Program clear_, project_, resolve_;
@@ -140,9 +155,12 @@ class PprTechnique final : public TechniqueWithParams<P> {
   }
 
   gl::ShaderSource src_;
+  int parity_ = 0;        // the intermediate this frame projects into
+  bool emptied_ = false;  // it holds PPR_EMPTY everywhere (the last resolve emptied it)
   mutable std::unique_ptr<Technique> fallback_;
   mutable bool fallback_loaded_ = false;
   gl::Buffer reflectors_;
+  std::size_t reflectors_bytes_ = 0;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "core/cli_common.h"
 #include "eval/runner.h"
@@ -260,4 +261,27 @@ TEST(Ppr, ArtifactCropsAgainstTheIdeal) {
     std::printf("%s (%zu px): ppr %.2f dB, hiz %.2f dB vs the ideal\n", c.name, n, *p, *q);
     EXPECT_GE(*p, c.min_psnr) << c.name;
   }
+}
+
+// The resolve empties the intermediate the next frame projects into (there is no clear pass):
+// frame after frame, and after the camera moves, ppr's image is what a fresh instance renders.
+TEST(Ppr, EachFrameStartsFromAnEmptyIntermediate) {
+  const Scene scene = make_builtin_scene("gallery");
+  Renderer r(scene, 160, 90);
+  auto ppr = create_technique("ppr");
+  ppr->load(r.shaders());
+  Camera moved = scene.cameras[0];
+  moved.position += glm::vec3(0.4f, 0.3f, -0.5f);
+  const Camera cams[] = {scene.cameras[0], scene.cameras[0], moved, moved, scene.cameras[0]};
+  for (int f = 0; f < 5; ++f) {
+    r.render(FrameRequest(cams[f], FrameTime{f + 1, 0.0f}), *ppr, ViewMode::Final, nullptr);
+    const RgbaImageF running = r.read_texture(r.reflection());
+    auto fresh = create_technique("ppr");
+    fresh->load(r.shaders());
+    r.render(FrameRequest(cams[f], FrameTime{f + 1, 0.0f}), *fresh, ViewMode::Final, nullptr);
+    const RgbaImageF want = r.read_texture(r.reflection());
+    EXPECT_EQ(std::memcmp(running.pixels.data(), want.pixels.data(), want.pixels.size() * sizeof(float)), 0)
+        << "frame " << f + 1;
+  }
+  test::expect_no_gl_errors();
 }
