@@ -11,6 +11,11 @@ layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprRe
 layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform coherent uimage2D intermediate;
 layout(location = 0) uniform uint u_fraction_bits;
 
+// The first reflectors, copied once per work group: every pixel reads every reflector.
+#define SHARED_REFLECTORS 64
+shared PprReflector group_reflectors[SHARED_REFLECTORS];
+PprReflector reflector(int k) { return k < SHARED_REFLECTORS ? group_reflectors[k] : reflectors[k]; }
+
 // How the mirror image moves on screen per source pixel (columns: source +x, +y), to first
 // order from the source's tangent plane (its neighbours' eye rays); false where degenerate.
 bool mirror_jacobian(GSample g, ivec2 p, vec2 dest, PprReflector r, out mat2 jacobian) {
@@ -27,6 +32,9 @@ bool mirror_jacobian(GSample g, ivec2 p, vec2 dest, PprReflector r, out mat2 jac
 }
 
 void main() {
+  for (uint i = gl_LocalInvocationIndex; i < uint(min(params.reflector_count, SHARED_REFLECTORS)); i += 64u)
+    group_reflectors[i] = reflectors[i];
+  barrier();
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
   if (any(greaterThanEqual(p, size))) return;
@@ -42,7 +50,7 @@ void main() {
   vec3 hit = vec3(0.0);
   bool crosses = false;  // the mirror image is visible through the plane (at `hit`)
   for (int k = 0; k < params.reflector_count; ++k) {
-    PprReflector r = reflectors[k];
+    PprReflector r = reflector(k);
     if (!seen || r.plane != plane) {
       plane = r.plane;
       seen = true;
@@ -78,7 +86,10 @@ void main() {
     mat2 jacobian;
     bool exact = mirror_jacobian(g, p, dest, r, jacobian);
     mat2 to_source = exact ? inverse(jacobian) : mat2(0.0);
-    ivec2 reach = exact ? ivec2(min(ceil(0.5 * (abs(jacobian[0]) + abs(jacobian[1]))), vec2(2.0))) : ivec2(0);
+    // The footprint's half extent per axis is h; a neighbour n pixels away has its centre more
+    // than n - 0.5 from `dest`, so it can lie inside only when n < h + 0.5.
+    vec2 h = 0.5 * (abs(jacobian[0]) + abs(jacobian[1]));
+    ivec2 reach = exact ? ivec2(min(max(ceil(h - 0.5), vec2(0.0)), vec2(2.0))) : ivec2(0);
     for (int dy = -reach.y; dy <= reach.y; ++dy)
       for (int dx = -reach.x; dx <= reach.x; ++dx) {
         ivec2 d = q + ivec2(dx, dy);
