@@ -108,10 +108,16 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     // One pixel: test the segment's point nearest to the surface from behind. Before the ray
     // has been seen in front, only a surface facing the ray counts: a ray that crosses a wall
     // within its origin's pixel hits it, one skimming its own surface does not.
+    // (Level 0 is the depth buffer: inside_surface's test without fetching it again, and the
+    // normal fetched only when it decides; the trace's time is its longest ray's chain of
+    // dependent fetches.)
     float hit_depth = min(closest, max(z_in, z_out));
     vec2 uv = (vec2(c) + 0.5) * frame.viewport.zw;
-    bool facing = dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1;
-    if ((was_in_front || facing) && inside_surface(uv, view_z_from_depth(hit_depth), h.thickness, backfaces))
+    float ray_z = view_z_from_depth(hit_depth);
+    bool inside = backfaces ? inside_surface(uv, ray_z, h.thickness, true)
+                            : !is_background(closest) && ray_z <= view_z_from_depth(closest) &&
+                                  view_z_from_depth(closest) - ray_z < h.thickness;
+    if (inside && (was_in_front || dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1))
       return TraceResult(true, uv, float(i + 1), length(view_position(uv, hit_depth) - origin));
     // Behind by more than the thickness (or on the starting surface): go on past this pixel.
     t = t_exit + cross_t;
