@@ -14,7 +14,7 @@ struct RayOptions {
   int fresnel SSR_DEFAULT(0);                 // 1 (Roberts blend): weight *= Schlick Fresnel
   int blend SSR_DEFAULT(0);                   // 0: standard composite; 1: Roberts blend
   int seed SSR_DEFAULT(0);                    // random seed of the rough samples and jitter
-  int compact SSR_DEFAULT(1);                 // 1: trace the classification's ray list (indirect); 0: every pixel
+  int compact SSR_DEFAULT(0);                 // 1: trace the classification's ray list (indirect); 0: every pixel
   int pad0 SSR_DEFAULT(0);                    // std140 starts the nested struct below at a 16-byte boundary
   int pad1 SSR_DEFAULT(0);
   int pad2 SSR_DEFAULT(0);

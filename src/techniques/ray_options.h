@@ -46,7 +46,8 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
                  offsetof(R, seed)));
   t.push_back(at({"compact", ParamType::Bool, 0, 0, 1, 1, "",
                   "Trace only the pixels with work: the tile classification lists them (and those behind glass) "
-                  "and the trace runs one lane per listed pixel (indirect dispatch); off: one lane per screen pixel."},
+                  "and the trace runs one lane per listed pixel (indirect dispatch); off: one lane per screen pixel "
+                  "(faster on every scene measured: docs/RESULTS.md, Speed)."},
                  offsetof(R, compact)));
   for (const ParamDesc& d : denoise_options(base + offsetof(R, denoise), /*with_switch=*/true)) t.push_back(d);
   return t;
