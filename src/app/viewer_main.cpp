@@ -83,6 +83,7 @@ struct Side {
   std::unique_ptr<gl::PassTimer> timer;
   gl::FrameTimes last_times;
   std::deque<float> history;  // technique ms of the last frames
+  bool instrumented = false;  // loaded with SSR_TELEMETRY (a telemetry view is shown)
 };
 
 // What a technique's image depends on besides the frame inputs: its name and parameter values.
@@ -304,6 +305,7 @@ void Viewer::set_technique(Side& side, const std::string& name) {
   std::unique_ptr<Technique> next = create_technique(name);
   next->load(renderer_->shaders());
   side.technique = std::move(next);
+  side.instrumented = false;
   set_reference_progress(*side.technique, [this](double f) { draw_progress("reference", f); });
   side.valid = false;
   side.shown_key.clear();
@@ -398,7 +400,10 @@ void Viewer::save(const std::string& path) {
 void Viewer::reload() {
   try {
     renderer_->reload_shaders();
-    for (Side& s : sides_) s.technique->load(renderer_->shaders());
+    for (Side& s : sides_) {
+      s.technique->load(renderer_->shaders());
+      s.instrumented = false;
+    }
     if (mask_ref_) mask_ref_->load(renderer_->shaders());
     diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
     for (Side& s : sides_) s.shown_key.clear();
@@ -927,6 +932,14 @@ void Viewer::render() {
                         ((scripted_ || live_truth_) && s.shown_key != key);
     if (!run_it) continue;
     s.request = 0;
+    // The telemetry views show an instrumented build's counts (its timings then include them).
+    const bool telemetry = view_ < static_cast<int>(view_table().size()) &&
+                           view_table()[static_cast<std::size_t>(view_)].telemetry;
+    if (telemetry != s.instrumented) {
+      s.technique->load(telemetry ? renderer_->shaders().with_defines({"SSR_TELEMETRY"}) : renderer_->shaders());
+      s.instrumented = telemetry;
+    }
+    if (telemetry) renderer_->telemetry().begin(fb_w_, fb_h_);
     s.timer->begin_frame();
     // The inputs render once a frame: the second side's render() finds them current.
     renderer_->render(current_frame(), *s.technique, static_cast<ViewMode>(view_), s.timer.get());
