@@ -86,11 +86,13 @@ RgbaImage8 hit_class_map(const std::vector<HitClass>& hits, const RgbaImageF& ba
 namespace {
 // Draws text with stb_easy_font (quads) scaled by `scale`, into an RGBA8 image.
 void draw_text(RgbaImage8& im, int x0, int y0, const std::string& text, int scale) {
-  static char buffer[99999];
+  // stb_easy_font needs about 270 bytes of vertices per character (its documentation).
+  std::vector<float> buffer((text.size() + 1) * 270 / sizeof(float) + 16);
   std::vector<char> str(text.begin(), text.end());
   str.push_back('\0');
-  const int quads = stb_easy_font_print(0, 0, str.data(), nullptr, buffer, sizeof buffer);
-  const float* v = reinterpret_cast<const float*>(buffer);
+  const int quads = stb_easy_font_print(0, 0, str.data(), nullptr, buffer.data(),
+                                        static_cast<int>(buffer.size() * sizeof(float)));
+  const float* v = buffer.data();
   for (int q = 0; q < quads; ++q) {
     // 4 vertices of 16 bytes (x, y, z, colour) per quad.
     const float* a = v + q * 16;
