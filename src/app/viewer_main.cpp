@@ -273,6 +273,18 @@ void Viewer::open_window(int w, int h) {
     throw RuntimeError("OpenGL functions could not be loaded.");
   info_ = gl::query_current_context("glfw");
   std::fprintf(stderr, "ssrlab-view: GL via glfw: %s | %s\n", info_.renderer.c_str(), info_.version.c_str());
+  // The window system may give less than asked (an X screen holds at most 32767 pixels a side);
+  // a smaller frame than the command line named would be a silent lie in every figure.
+  int got_w = 0, got_h = 0;
+  glfwGetFramebufferSize(window_, &got_w, &got_h);
+  GLint max_dims[2] = {0, 0};
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, max_dims);
+  if (w > max_dims[0] || h > max_dims[1])
+    throw InputError("size " + std::to_string(w) + "x" + std::to_string(h) + " is larger than this GL's viewport limit " +
+                     std::to_string(max_dims[0]) + "x" + std::to_string(max_dims[1]) + ".");
+  if (got_w != w || got_h != h)
+    throw InputError("the window system opened a " + std::to_string(got_w) + "x" + std::to_string(got_h) +
+                     " window, not the " + std::to_string(w) + "x" + std::to_string(h) + " asked for.");
   clock_ = info_.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu;
 }
 
@@ -1036,6 +1048,8 @@ int Viewer::run() {
     script.push_back({0, "frames", {std::to_string(o_.frames)}});
     if (!o_.screenshot.empty()) script.push_back({0, "screenshot", {o_.screenshot}});
   }
+  if (!o_.screenshot.empty() && o_.frames <= 0)
+    throw InputError("--screenshot needs --frames N: the frame it captures (F12 saves one in an interactive session).");
   if (!o_.screenshot.empty()) image_format_for(o_.screenshot);
   scripted_ = !script.empty();
   std::optional<ViewerPreset> preset;

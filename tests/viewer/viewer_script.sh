@@ -128,4 +128,6 @@ expect2 'nosuch' --preset bad.json --frames 1
 echo '{ not json' > broken.json
 expect2 'broken.json' --preset broken.json --frames 1
 expect2 'nosuch' --technique nosuch --frames 1
+expect2 'needs --frames' --screenshot shot.png
+expect2 'viewport limit\|window system' --size 100000x100 --frames 1
 echo "viewer script ok"
