@@ -28,6 +28,7 @@
 #include "app/viewer_preset.h"
 #include "app/viewer_script.h"
 #include "core/cli_common.h"
+#include "gl/readback.h"
 #include "core/errors.h"
 #include "eval/grid.h"
 #include "eval/metrics.h"
@@ -99,18 +100,7 @@ bool is_frame_pass(const std::string& name) {
 }
 
 RgbaImage8 read_rgba8(const gl::Texture2D& tex) {
-  const int w = tex.width(), h = tex.height();
-  RgbaImage8 im{w, h, {}};
-  im.pixels.resize(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(tex.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(im.pixels.size()),
-                    im.pixels.data());
-  const std::size_t row = static_cast<std::size_t>(w) * 4;
-  for (int y = 0; y < h / 2; ++y)
-    std::swap_ranges(im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)),
-                     im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y + 1)),
-                     im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(h - 1 - y)));
-  return im;
+  return {tex.width(), tex.height(), gl::read_texture<std::uint8_t>(tex, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
 }
 
 // Orbit camera state kept as spherical coordinates around the target.
@@ -891,15 +881,10 @@ void Viewer::update_traceable_mask() {
   renderer_->render(current_frame(), *mask_ref_, ViewMode::Final, nullptr);
   const ReferenceOutputs out = reference_outputs(*mask_ref_);
   RgbaImage8 im = class_map(*out.classes, fb_w_, fb_h_);
-  // Texture rows go bottom-up.
-  const std::size_t row = static_cast<std::size_t>(fb_w_) * 4;
-  std::vector<std::uint8_t> flipped(im.pixels.size());
-  for (int y = 0; y < fb_h_; ++y)
-    std::copy_n(im.pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(fb_h_ - 1 - y)), row,
-                flipped.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+  gl::flip_rows(im.pixels, fb_w_, fb_h_, 4);  // texture rows go bottom-up
   mask_tex_ = gl::Texture2D("viewer traceable mask", GL_RGBA8, fb_w_, fb_h_);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, fb_w_, fb_h_, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, fb_w_, fb_h_, GL_RGBA, GL_UNSIGNED_BYTE, im.pixels.data());
   mask_key_ = key;
 }
 

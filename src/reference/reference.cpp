@@ -1,5 +1,7 @@
 #include "reference/reference.h"
 
+#include "gl/readback.h"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -93,15 +95,12 @@ void ReferenceTechnique::run(const FrameContext& in) {
   const std::size_t npx = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
 
   // --- read the G-buffer back (GL convention: row 0 at the bottom) --------------------------
-  std::vector<float> depth(npx), normal_rough(npx * 4);
-  std::vector<std::uint16_t> material(npx * 4);  // reflector id, reflectance, flags, object id
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(in.gbuffer.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    static_cast<GLsizei>(npx * sizeof(float)), depth.data());
-  glGetTextureImage(in.gbuffer.normal_roughness.id(), 0, GL_RGBA, GL_FLOAT,
-                    static_cast<GLsizei>(npx * 4 * sizeof(float)), normal_rough.data());
-  glGetTextureImage(in.gbuffer.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT,
-                    static_cast<GLsizei>(npx * 4 * sizeof(std::uint16_t)), material.data());
+  using gl::Rows;
+  const std::vector<float> depth = gl::read_texture<float>(in.gbuffer.depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1, Rows::GlOrder);
+  const std::vector<float> normal_rough = gl::read_texture<float>(in.gbuffer.normal_roughness, GL_RGBA, GL_FLOAT, 4, Rows::GlOrder);
+  // reflector id, reflectance, flags, object id
+  const std::vector<std::uint16_t> material =
+      gl::read_texture<std::uint16_t>(in.gbuffer.material, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT, 4, Rows::GlOrder);
 
   const CameraMatrices& m = in.matrices;
   const glm::dmat4 inv_proj = glm::inverse(glm::dmat4(m.proj));
@@ -394,11 +393,10 @@ void ReferenceTechnique::run(const FrameContext& in) {
   glClearTexImage(ideal_refraction_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glClearTexImage(in.refraction->id(), 0, GL_RGBA, GL_FLOAT, zero);  // non-glass pixels: none
   if (in.gpu_scene.has_transparent()) {
-    std::vector<float> glass_depth(npx), glass_surface(npx * 4);
-    glGetTextureImage(in.gbuffer.glass_depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      static_cast<GLsizei>(npx * sizeof(float)), glass_depth.data());
-    glGetTextureImage(in.gbuffer.glass_surface.id(), 0, GL_RGBA, GL_FLOAT,
-                      static_cast<GLsizei>(npx * 4 * sizeof(float)), glass_surface.data());
+    const std::vector<float> glass_depth =
+        gl::read_texture<float>(in.gbuffer.glass_depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1, gl::Rows::GlOrder);
+    const std::vector<float> glass_surface =
+        gl::read_texture<float>(in.gbuffer.glass_surface, GL_RGBA, GL_FLOAT, 4, gl::Rows::GlOrder);
     pixels.clear();
     for (std::size_t i = 0; i < npx; ++i)
       if (glass_surface[i * 4 + 3] >= 1.0f)

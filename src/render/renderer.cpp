@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include "gl/readback.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -476,55 +478,22 @@ void Renderer::display_pass(ViewMode view, gl::PassTimer* timer) {
 // The technique's composited colour, for its next frame (TEX_PREV_COLOR).
 void Renderer::keep_color(TechniqueState& state) { copy_texture(color_, state.prev_color); }
 
-namespace {
-template <class T>
-void flip_rows(std::vector<T>& px, int width, int height, int channels) {
-  const std::size_t row = static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
-  for (int y = 0; y < height / 2; ++y)
-    std::swap_ranges(px.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)),
-                     px.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y + 1)),
-                     px.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height - 1 - y)));
-}
-}  // namespace
-
 RgbaImage8 Renderer::read_display() const {
-  RgbaImage8 im{width_, height_, {}};
-  im.pixels.resize(static_cast<std::size_t>(width_) * height_ * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(display_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(im.pixels.size()), im.pixels.data());
-  flip_rows(im.pixels, width_, height_, 4);
-  return im;
+  return {width_, height_, gl::read_texture<std::uint8_t>(display_, GL_RGBA, GL_UNSIGNED_BYTE, 4)};
 }
 
 RgbaImageF Renderer::read_texture(const gl::Texture2D& tex) const {
-  RgbaImageF im{tex.width(), tex.height(), {}};
-  im.pixels.resize(static_cast<std::size_t>(tex.width()) * tex.height() * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(tex.id(), 0, GL_RGBA, GL_FLOAT,
-                    static_cast<GLsizei>(im.pixels.size() * sizeof(float)), im.pixels.data());
-  flip_rows(im.pixels, tex.width(), tex.height(), 4);
-  return im;
+  return {tex.width(), tex.height(), gl::read_texture<float>(tex, GL_RGBA, GL_FLOAT, 4)};
 }
 
 std::vector<std::uint16_t> Renderer::read_material() const {
-  std::vector<std::uint16_t> m(static_cast<std::size_t>(width_) * height_ * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 2);
-  glGetTextureImage(gbuffer_.material.id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT,
-                    static_cast<GLsizei>(m.size() * sizeof(std::uint16_t)), m.data());
-  flip_rows(m, width_, height_, 4);
-  return m;
+  return gl::read_texture<std::uint16_t>(gbuffer_.material, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT, 4);
 }
 
 RgbaImageF Renderer::read_linear() const { return read_texture(linear_); }
 
 std::vector<float> Renderer::read_depth() const {
-  std::vector<float> d(static_cast<std::size_t>(width_) * height_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(gbuffer_.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    static_cast<GLsizei>(d.size() * sizeof(float)), d.data());
-  flip_rows(d, width_, height_, 1);
-  return d;
+  return gl::read_texture<float>(gbuffer_.depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
 }
 
 }  // namespace ssr
