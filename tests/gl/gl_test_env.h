@@ -2,9 +2,15 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include "gl/program.h"
 
 #include "gl/context.h"
 #include "eval/metrics.h"
@@ -34,6 +40,22 @@ inline std::vector<bool> planar_mask(const Renderer& r) {
   std::vector<bool> out(static_cast<std::size_t>(w) * h);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = m[i * 4] > 0;
   return out;
+}
+
+// Compiles a test's own compute shader `source` (it may #include anything under shaders/) from
+// a temporary copy of the shader tree, removed again whatever happens.
+inline gl::Program compile_test_shader(const std::string& name, const std::string& source) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ssrlab-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::copy(SSRLAB_SHADER_DIR, dir, fs::copy_options::recursive);
+  fs::create_directories(dir / "test");
+  std::ofstream(dir / "test" / (name + ".comp")) << source;
+  struct Remove {
+    fs::path dir;
+    ~Remove() { fs::remove_all(dir); }
+  } remove{dir};
+  return gl::Program::compute(gl::ShaderSource(dir), "test/" + name + ".comp");
 }
 
 }  // namespace ssr::test

@@ -3,10 +3,7 @@
 // (or leaves the end of a block outside the buffer). ReferenceParams is C++ only (no block).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "gl/program.h"
 #include "gl_test_env.h"
@@ -21,7 +18,6 @@
 #include "shared/telemetry.h"
 
 using namespace ssr;
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -81,19 +77,7 @@ std::string layout_shader() {
 }  // namespace
 
 TEST(Layouts, SharedStructsMatchTheirBlocks) {
-  const fs::path dir = fs::temp_directory_path() / ("ssrlab-layouts-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::copy(SSRLAB_SHADER_DIR, dir, fs::copy_options::recursive);
-  fs::create_directories(dir / "test");
-  std::ofstream(dir / "test/layouts.comp") << layout_shader();
-  gl::Program prog;
-  try {
-    prog = gl::Program::compute(gl::ShaderSource(dir), "test/layouts.comp");
-  } catch (...) {
-    fs::remove_all(dir);
-    throw;
-  }
-  fs::remove_all(dir);
+  const gl::Program prog = test::compile_test_shader("layouts", layout_shader());
   int i = 0;
   for (const Layout& l : kLayouts) {
     const std::string block = "Block" + std::to_string(i++);

@@ -3,13 +3,10 @@
 // (Falcor's PackedFormatsTests pattern).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <random>
 #include <vector>
@@ -19,7 +16,6 @@
 #include "shared/ppr_packing.h"
 
 using namespace ssr;
-namespace fs = std::filesystem;
 namespace sh = ssr::shared;
 
 namespace {
@@ -123,33 +119,14 @@ std::vector<PprCase> make_cases() {
   return cases;
 }
 
-// A temporary copy of the shader tree with the test shader in it, so that its
-// #include "shared/ppr_packing.h" finds the real header.
-fs::path make_shader_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("ssrlab-ppr-packing-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::copy(SSRLAB_SHADER_DIR, dir, fs::copy_options::recursive);
-  fs::create_directories(dir / "test");
-  std::ofstream(dir / "test/ppr_packing.comp") << kShader;
-  return dir;
-}
-
 bool same(glm::vec2 a, glm::vec2 b) { return a.x == b.x && a.y == b.y; }
 
 }  // namespace
 
 TEST(PprPackingGl, GlslMatchesCppBitForBit) {
-  const fs::path dir = make_shader_dir();
+  const gl::Program prog = test::compile_test_shader("ppr_packing", kShader);
   const std::vector<PprCase> cases = make_cases();
   const auto n = static_cast<GLsizeiptr>(cases.size());
-  gl::Program prog;
-  try {
-    prog = gl::Program::compute(gl::ShaderSource(dir), "test/ppr_packing.comp");
-  } catch (...) {
-    fs::remove_all(dir);
-    throw;
-  }
-  fs::remove_all(dir);
 
   gl::Buffer in = gl::make_buffer("ppr packing cases", n * GLsizeiptr(sizeof(PprCase)), cases.data());
   gl::Buffer out = gl::make_buffer("ppr packing results", n * GLsizeiptr(sizeof(PprResult)));

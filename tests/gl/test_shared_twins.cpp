@@ -4,15 +4,12 @@
 // has its own bit-exact test (test_ppr_packing.cpp).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <random>
 #include <vector>
 
@@ -22,7 +19,6 @@
 #include "shared/tonemap.h"
 
 using namespace ssr;
-namespace fs = std::filesystem;
 namespace sh = ssr::shared;
 
 namespace {
@@ -121,15 +117,6 @@ std::vector<TwinCase> make_cases() {
   return cases;
 }
 
-fs::path make_shader_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("ssrlab-twins-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::copy(SSRLAB_SHADER_DIR, dir, fs::copy_options::recursive);
-  fs::create_directories(dir / "test");
-  std::ofstream(dir / "test/twins.comp") << kShader;
-  return dir;
-}
-
 float max_diff(glm::vec4 a, glm::vec4 b) {
   const glm::vec4 d = glm::abs(a - b);
   return std::max(std::max(d.x, d.y), std::max(d.z, d.w));
@@ -142,15 +129,7 @@ float max_diff(glm::vec4 a, glm::vec4 b) {
 // reflection 5.2e-6, tonemap 2.4e-7, srgb 3.6e-7, display 3.6e-7. The bounds (6x and more) leave
 // room for a GPU's transcendentals.
 TEST(SharedTwins, SamplingAndTonemapGlslMatchCpp) {
-  const fs::path dir = make_shader_dir();
-  gl::Program prog;
-  try {
-    prog = gl::Program::compute(gl::ShaderSource(dir), "test/twins.comp");
-  } catch (...) {
-    fs::remove_all(dir);
-    throw;
-  }
-  fs::remove_all(dir);
+  const gl::Program prog = test::compile_test_shader("twins", kShader);
   const std::vector<TwinCase> cases = make_cases();
   const auto n = static_cast<GLsizeiptr>(cases.size());
   gl::Buffer in = gl::make_buffer("twin cases", n * GLsizeiptr(sizeof(TwinCase)), cases.data());
