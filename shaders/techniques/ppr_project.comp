@@ -101,5 +101,8 @@ void main() {
         vec2 source = vec2(p) + 0.5 + clamp(move, vec2(-1.0), vec2(1.0));
         imageAtomicMin(intermediate, d, ppr_pack(source - (vec2(d) + 0.5), u_fraction_bits));
       }
+    // The rest of this plane's reflectors would land on the same destination pixel, which shows
+    // this one: skip them (a tiled floor tests half its tiles on average, not all).
+    crosses = false;
   }
 }
