@@ -1,4 +1,4 @@
-// The floor pass (DESIGN §6): reads every input a screen-space technique reads at its own pixel
+// The floor pass (ARCHITECTURE §6): reads every input a screen-space technique reads at its own pixel
 // (depth, normal + roughness, material, lit colour) and writes the reflection once. Its time is
 // what the memory traffic alone costs; technique / floor says how far a pass is from that limit.
 #include "common/gbuffer.glsl"

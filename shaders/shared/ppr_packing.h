@@ -44,7 +44,7 @@
 // The integer and fraction bits of a field are the two's-complement split of q, i.e.
 // v ~ floor(v) + frac with frac in [0, 1) also for negative v (the seeds took frac() of a
 // negative value but truncated the integer part with int(), so their negative offsets decoded
-// wrongly: DESIGN §10).
+// wrongly: ARCHITECTURE §9).
 // Offsets beyond the ranges above CLAMP per component (the major to 2^I - 2^-F, the minor to its
 // range) instead of wrapping (the seeds' 12-bit fields wrapped past 4095 px). The orientation is
 // still chosen from the unclamped offset. Offsets must be finite (NaN gives an unspecified value).

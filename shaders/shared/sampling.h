@@ -1,7 +1,7 @@
 // Random numbers and GGX importance sampling, shared by GLSL (techniques) and C++ (the reference).
 // Written in the common subset of GLSL and GLM so both sides run the very same arithmetic.
 //
-// Fixes the seeds' defects (DESIGN §10): samples come from the distribution of *visible*
+// Fixes the seeds' defects (ARCHITECTURE §9): samples come from the distribution of *visible*
 // normals (Heitz 2018), so no microfacet faces away from the viewer, and every random number is
 // in [0, 1) and every divisor clamped, so nothing divides by zero at xi -> 1.
 #pragma once

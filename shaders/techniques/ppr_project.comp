@@ -42,7 +42,7 @@ void main() {
   if (is_background(g.depth)) return;
   vec3 x = view_to_world_pos(g.pos_vs);
   vec3 eye = frame.camera_pos.xyz;
-  // Every reflector: a projection that misses one must not stop the others (DESIGN §10).
+  // Every reflector: a projection that misses one must not stop the others (ARCHITECTURE §9).
   // Consecutive reflectors on one plane (a tiled floor) share the mirror image and where the
   // camera sees it: computed once per plane, then only each rectangle is tested.
   vec4 plane = vec4(0.0);

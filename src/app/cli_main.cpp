@@ -1,4 +1,4 @@
-// ssrlab: the headless command line (DESIGN §7). Exit codes: 0 ok, 1 runtime failure, 2 bad input.
+// ssrlab: the headless command line (ARCHITECTURE §7). Exit codes: 0 ok, 1 runtime failure, 2 bad input.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -55,7 +55,7 @@ int list_techniques() {
   return 0;
 }
 
-// Bad input: one sentence on stderr (DESIGN §7), line breaks folded, one final full stop.
+// Bad input: one sentence on stderr (ARCHITECTURE §7), line breaks folded, one final full stop.
 int input_error(std::string msg) {
   for (char& c : msg)
     if (c == '\n' || c == '\r' || c == '\t') c = ' ';

@@ -90,7 +90,7 @@ int run_compare(const CompareOptions& o) {
     bottom.push_back({"diff vs truth, PSNR " + fmt("%.1f dB", e.psnr),
                       heat_map(ev.score.display, frame.truth(), frame.classes())});
     run.results.push_back(ev.result);
-    // The two oracles check each other (DESIGN §5) wherever planar runs.
+    // The two oracles check each other (ARCHITECTURE §5) wherever planar runs.
     if (v.technique == "planar" && !run.oracles) run.oracles = oracle_agreement(frame, ev.score);
   }
   std::vector<GridTile> tiles = top;
@@ -120,7 +120,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
   c->add_option("--out", o->out, "The labelled grid (.png).")->required();
-  c->add_option("--json", o->json, "Results JSON (DESIGN §7).");
+  c->add_option("--json", o->json, "Results JSON (ARCHITECTURE §7).");
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");

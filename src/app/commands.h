@@ -1,4 +1,4 @@
-// The subcommands of `ssrlab` (DESIGN §7). Each validates all input before touching the GL and
+// The subcommands of `ssrlab` (ARCHITECTURE §7). Each validates all input before touching the GL and
 // throws InputError (exit 2) or RuntimeError (exit 1).
 #pragma once
 #include <functional>

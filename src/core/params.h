@@ -1,4 +1,4 @@
-// One description per parameter (DESIGN §3).
+// One description per parameter (ARCHITECTURE §3).
 //
 // A technique's Params struct (declared in shaders/shared/<technique>.h, so the GPU reads the
 // very same layout) gets one table of ParamDesc. That table drives the CLI (--set), the ImGui

@@ -1,4 +1,4 @@
-// The verdict's breakdown (DESIGN §5): every figure per region (each planar reflector, all
+// The verdict's breakdown (ARCHITECTURE §5): every figure per region (each planar reflector, all
 // planar reflectors, other reflective surfaces, roughness bands) and per class (traceable /
 // missing / sky), with hit classes, reflection-only error and the glossy noise floor.
 //

@@ -1,4 +1,4 @@
-// Error metrics of DESIGN §5. Every output is finite: a non-finite input value counts as the
+// Error metrics of ARCHITECTURE §5. Every output is finite: a non-finite input value counts as the
 // maximal error (1 per channel on images in [0,1]) and is counted in `nonfinite`.
 #include "eval/metrics.h"
 

@@ -1,4 +1,4 @@
-// Error metrics of DESIGN §5, computed on tone-mapped images in [0,1] over reflective pixels.
+// Error metrics of ARCHITECTURE §5, computed on tone-mapped images in [0,1] over reflective pixels.
 #pragma once
 #include <cstddef>
 #include <cstdint>

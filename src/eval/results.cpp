@@ -1,4 +1,4 @@
-// Result records and their writers (DESIGN §6, §7).
+// Result records and their writers (ARCHITECTURE §6, §7).
 #include "eval/results.h"
 
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// Result records of `ssrlab compare` and `ssrlab bench`, and their writers (DESIGN §6, §7):
+// Result records of `ssrlab compare` and `ssrlab bench`, and their writers (ARCHITECTURE §6, §7):
 // results JSON, bench JSON, CSV, and a text table for the terminal.
 #pragma once
 #include <filesystem>
@@ -40,7 +40,7 @@ struct TechniqueResult {
   std::vector<std::pair<std::string, std::string>> params;
   TimeStats time_ms;                // the technique's passes only
   std::vector<PassTiming> passes;   // every pass of the frame
-  double floor_ms = 0;              // the floor pass (DESIGN §6)
+  double floor_ms = 0;              // the floor pass (ARCHITECTURE §6)
   ErrorMetrics error;
   Breakdown breakdown;              // per region and class (empty: not scored)
   std::optional<IterationStats> telemetry;  // one instrumented frame; none: the technique does not iterate
@@ -61,7 +61,7 @@ double time_over_floor(const TechniqueResult& r);
 // A param value as JSON: integer, floating-point number, boolean, or string.
 nlohmann::json param_value_json(const std::string& text);
 
-// The results JSON of DESIGN §7 (one scene at one size).
+// The results JSON of ARCHITECTURE §7 (one scene at one size).
 nlohmann::json to_json(const DeviceInfo& device, const std::string& revision,
                        const RunResults& run);
 

@@ -27,7 +27,7 @@ class ScoredFrame {
   ScoredFrame(Renderer& renderer, const FrameRequest& frame, Technique& reference);
 
   struct Score {
-    ErrorMetrics error;     // pooled figures (DESIGN §7's `error`)
+    ErrorMetrics error;     // pooled figures (ARCHITECTURE §7's `error`)
     Breakdown breakdown;    // per region and class
     RgbaImageF display;     // the technique's final image, display values
     RgbaImageF reflected;   // its reflected radiance before the specular weight, display values
@@ -84,7 +84,7 @@ struct Timing {
 // Renders warmup + frames whole frames (inputs, technique, composite) and times every pass.
 Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const TimingOptions& o);
 
-// The floor pass (DESIGN §6): reads a technique's inputs, writes its output once.
+// The floor pass (ARCHITECTURE §6): reads a technique's inputs, writes its output once.
 class FloorPass {
  public:
   explicit FloorPass(const gl::ShaderSource& shaders);
@@ -109,7 +109,7 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
                                   const Variant& variant, const TimingOptions& timing, double floor_ms);
 
 // `planar` (its score on `frame`) against the reference: mirror, non-normal-mapped reflector
-// pixels (DESIGN §5: the two oracles check each other).
+// pixels (ARCHITECTURE §5: the two oracles check each other).
 OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar);
 
 // The pixels that do reflection work in the renderer's current G-buffer (row 0 = top): the

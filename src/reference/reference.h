@@ -1,4 +1,4 @@
-// `reference`: the ray-traced ground truth (DESIGN §5), a technique like the others.
+// `reference`: the ray-traced ground truth (ARCHITECTURE §5), a technique like the others.
 //
 // From the frame's own G-buffer (positions reconstructed from depth, read back), each reflective
 // pixel's reflection rays are traced against the scene's triangles with Embree: one mirror ray,

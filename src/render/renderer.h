@@ -1,4 +1,4 @@
-// The deferred frame (DESIGN §1). Renderer::render is the frame, as its pass list:
+// The deferred frame (ARCHITECTURE §1). Renderer::render is the frame, as its pass list:
 //   G-buffer (+ motion vectors) -> lighting -> [back faces] [Hi-Z] -> technique -> composite ->
 //   display -> history
 // The bracketed passes run only when the technique declares their resources (technique_api.h).

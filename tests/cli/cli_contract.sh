@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The command-line contract (DESIGN §7): outputs, exit codes, one-sentence errors, and no file
+# The command-line contract (ARCHITECTURE §7): outputs, exit codes, one-sentence errors, and no file
 # left behind on bad input. Runs the real binary ($SSRLAB) headless.
 set -u
 tmp=$(mktemp -d)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `ssrlab compare` and `ssrlab bench` write valid JSON with every field of DESIGN §7, a CSV with
+# `ssrlab compare` and `ssrlab bench` write valid JSON with every field of ARCHITECTURE §7, a CSV with
 # one row per result, and SVG plots; bad input is refused with exit 2 and nothing written.
 set -eu
 tmp=$(mktemp -d)

@@ -1,4 +1,4 @@
-// Every technique at its defaults (DESIGN: defaults are the product), on every built-in scene
+// Every technique at its defaults (defaults are the product), on every built-in scene
 // and pedestal at 640x360 on llvmpipe: the verdict a user gets without touching a slider.
 // Each tolerance carries its measurement (this machine, llvmpipe, reference at 64 samples).
 #include <gtest/gtest.h>

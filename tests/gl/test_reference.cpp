@@ -1,5 +1,5 @@
 // The ground truth: two independent oracles agree, the reference is deterministic, and its
-// classes and ideal behave as defined (DESIGN §5).
+// classes and ideal behave as defined (ARCHITECTURE §5).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The verdict's ground: traceable classes at contact lines, the G-buffer's object and region
-// labels, and the breakdown of real techniques on scenes built for it (DESIGN §5).
+// labels, and the breakdown of real techniques on scenes built for it (ARCHITECTURE §5).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Error metrics (DESIGN §5) on synthetic images with known answers.
+// Error metrics (ARCHITECTURE §5) on synthetic images with known answers.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Result records and writers: time statistics, results/bench JSON (DESIGN §7), CSV, table,
+// Result records and writers: time statistics, results/bench JSON (ARCHITECTURE §7), CSV, table,
 // atomic text files.
 #include <gtest/gtest.h>
 
