@@ -20,8 +20,10 @@ struct ClassifyParams {
   int rays_per_quad;          // 1, 2 or 4: rays per 2x2 quad above quad_roughness
   int divisor;                // 1: a trace texel per pixel; 2: per 2x2 block (half resolution)
   ivec4 trace_size;           // xy: the trace grid's size; zw: this frame's pixel of a 2x2 block
-  int list_glass;             // 1: pixels behind a transparent surface join the ray list (they refract)
-  int pad0, pad1, pad2;
+  int list_glass SSR_DEFAULT(0);  // 1: pixels behind a transparent surface join the ray list (they refract)
+  int pad0 SSR_DEFAULT(0);
+  int pad1 SSR_DEFAULT(0);
+  int pad2 SSR_DEFAULT(0);
 };
 
 // The trace grid's texel t stands for pixel t * divisor + offset (offset: the frame's pixel of

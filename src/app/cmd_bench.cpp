@@ -14,11 +14,12 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "core/revision.h"
-#include "core/variants.h"
+#include "techniques/variants.h"
 #include "eval/results.h"
 #include "eval/runner.h"
 #include "eval/svg_plot.h"
 #include "scene/scene_io.h"
+#include "techniques/assignments.h"
 
 namespace fs = std::filesystem;
 

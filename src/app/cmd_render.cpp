@@ -19,6 +19,7 @@
 #include "scene/scene_io.h"
 #include "techniques/presets.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 namespace fs = std::filesystem;
 

@@ -11,13 +11,14 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "core/revision.h"
-#include "core/variants.h"
+#include "techniques/variants.h"
 #include "eval/grid.h"
 #include "eval/results.h"
 #include "eval/sequence.h"
 #include "eval/video.h"
 #include "render/image_io.h"
 #include "scene/scene_io.h"
+#include "techniques/assignments.h"
 
 namespace fs = std::filesystem;
 

@@ -42,6 +42,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/scene_io.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 namespace fs = std::filesystem;
 using namespace ssr;

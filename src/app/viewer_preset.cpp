@@ -12,8 +12,9 @@
 #include "core/errors.h"
 #include "eval/results.h"
 #include "render/renderer.h"
-#include "scene/scene_io_internal.h"
+#include "core/files.h"
 #include "scene/scene_json.h"
+#include "techniques/assignments.h"
 
 namespace ssr {
 
@@ -30,8 +31,8 @@ namespace {
 
 using json = nlohmann::json;
 using ojson = nlohmann::ordered_json;
-using scene_io_detail::fail;
-using scene_io_detail::q;
+using files::fail;
+using files::q;
 
 constexpr std::uintmax_t kMaxPresetBytes = 1u << 20;
 const std::vector<std::string> kCompareNames = {"off", "split", "diff"};
@@ -263,7 +264,7 @@ void save_preset(const std::filesystem::path& path, const ViewerPreset& preset) 
 }
 
 ViewerPreset load_preset(const std::filesystem::path& path) {
-  return preset_from_json_text(scene_io_detail::read_file(path, kMaxPresetBytes, "viewer preset"),
+  return preset_from_json_text(files::read_file(path, kMaxPresetBytes, "viewer preset"),
                                "viewer preset " + q(path));
 }
 

@@ -33,6 +33,7 @@
 
 #include "scene/scene.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 namespace ssr {
 

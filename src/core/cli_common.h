@@ -1,9 +1,9 @@
 // Pieces shared by the two programs' command lines.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "techniques/technique.h"
 
 namespace ssr {
 
@@ -19,9 +19,5 @@ std::pair<int, int> parse_size(const std::string& text);
 // of one command may be the same file. Pairs of {option, path}, e.g. {"--json", "r.json"};
 // empty paths are skipped.
 void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path);
-
-// Applies "key=value" assignments to a technique's parameters; unknown keys, keys of another
-// technique and bad values throw InputError.
-void apply_assignments(Technique& technique, const std::vector<std::string>& assignments);
 
 }  // namespace ssr

@@ -7,6 +7,7 @@
 #include "reference/reference.h"
 #include "shared/bindings.h"
 #include "shared/tonemap.h"
+#include "techniques/assignments.h"
 
 namespace ssr {
 

@@ -11,6 +11,7 @@
 #include "eval/svg_plot.h"
 #include "eval/temporal.h"
 #include "scene/animation.h"
+#include "techniques/assignments.h"
 
 namespace ssr {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/variants.h"
+#include "techniques/variants.h"
 #include "eval/breakdown.h"
 #include "eval/metrics.h"
 #include "eval/runner.h"

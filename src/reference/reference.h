@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "eval/metrics.h"
+#include "reference/pixel_class.h"
 #include "techniques/technique.h"
 
 namespace ssr {

@@ -61,26 +61,6 @@ Image load_image(const fs::path& path, const std::string& context, std::size_t b
 
 // ---- files and paths ------------------------------------------------------------------------
 
-std::string read_file(const fs::path& path, std::uintmax_t cap, const std::string& what,
-                      const std::string& context) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) fail(context + what + " " + q(path) + " does not exist");
-  if (!fs::is_regular_file(st)) fail(context + what + " " + q(path) + " is not a regular file");
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec) fail(context + what + " " + q(path) + " could not be read (" + ec.message() + ")");
-  if (size > cap)
-    fail(context + what + " " + q(path) + " is " + std::to_string(size) + " bytes, more than the " +
-         std::to_string(cap) + " supported");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(context + what + " " + q(path) + " could not be opened");
-  std::string text(static_cast<std::size_t>(size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  if (in.gcount() != static_cast<std::streamsize>(size))
-    fail(context + what + " " + q(path) + " could not be read completely");
-  return text;
-}
-
 fs::path resolve_inside(const fs::path& root, const fs::path& base, std::string rel,
                         const std::string& context, const std::string& what) {
   std::replace(rel.begin(), rel.end(), '\\', '/');

@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "core/errors.h"
+#include "core/files.h"
 #include "scene/scene.h"
 
 namespace ssr::scene_io_detail {
@@ -34,30 +35,13 @@ constexpr std::size_t kMaxTriangles = 50'000'000;  // per file and per scene
 
 // ---- errors ---------------------------------------------------------------------------------
 
-// Throws InputError with `msg` as one sentence: no line breaks, one final full stop.
-[[noreturn]] inline void fail(std::string msg) {
-  for (char& c : msg)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
-  while (!msg.empty() && (msg.back() == ' ' || msg.back() == '.')) msg.pop_back();
-  throw InputError(msg + ".");
-}
-
-// 'text' (built with append: GCC 12 warns wrongly about "'" + std::string at -O2, PR 105329).
-inline std::string q(std::string_view s) {
-  std::string r;
-  r.reserve(s.size() + 2);
-  r.append(1, '\'').append(s).append(1, '\'');
-  return r;
-}
-inline std::string q(const std::string& s) { return q(std::string_view(s)); }
-inline std::string q(const fs::path& p) { return q(std::string_view(p.native())); }
+// One-sentence errors, quoting and file reading live in core/files.h (presets use them too).
+using files::fail;
+using files::q;
+using files::read_file;
 
 // ---- files and paths (mtl_loader.cpp) -------------------------------------------------------
 
-// Reads a whole regular file of at most `cap` bytes. `what` names it ("OBJ file", ...);
-// `context` prefixes the messages (e.g. "MTL file 'x' line 3: ").
-std::string read_file(const fs::path& path, std::uintmax_t cap, const std::string& what,
-                      const std::string& context = "");
 
 // Resolves `rel` (as written in a file) against `base` and checks that it stays inside `root`.
 fs::path resolve_inside(const fs::path& root, const fs::path& base, std::string rel,

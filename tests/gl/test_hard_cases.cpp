@@ -25,6 +25,7 @@
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
 #include "tracer_test_util.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

@@ -12,6 +12,7 @@
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

@@ -10,7 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/cli_common.h"
-#include "core/variants.h"
+#include "techniques/variants.h"
 #include "eval/runner.h"
 #include "eval/sequence.h"
 #include "scene/animation.h"
@@ -24,6 +24,7 @@
 #include "techniques/denoiser.h"
 #include "techniques/stochastic.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 using test::add_mesh;

@@ -7,13 +7,14 @@
 #include <cstring>
 
 #include "core/cli_common.h"
-#include "core/variants.h"
+#include "techniques/variants.h"
 #include "eval/runner.h"
 #include "gl_test_env.h"
 #include "render/renderer.h"
 #include "render/telemetry.h"
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

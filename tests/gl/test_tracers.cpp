@@ -12,6 +12,7 @@
 #include "scene/meshgen.h"
 #include "techniques/technique.h"
 #include "tracer_test_util.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

@@ -15,6 +15,7 @@
 #include "scene/scene_io.h"
 #include "core/cli_common.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

@@ -7,6 +7,7 @@
 #include "core/cli_common.h"
 #include "eval/runner.h"
 #include "scene/scene_io.h"
+#include "techniques/assignments.h"
 
 namespace ssr::test {
 

@@ -6,6 +6,7 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 

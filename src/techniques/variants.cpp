@@ -1,4 +1,4 @@
-#include "core/variants.h"
+#include "techniques/variants.h"
 
 #include <algorithm>
 #include <set>
@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "techniques/presets.h"
 #include "techniques/technique.h"
+#include "techniques/assignments.h"
 
 namespace ssr {
 

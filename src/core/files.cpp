@@ -1,0 +1,46 @@
+#include "core/files.h"
+
+#include <fstream>
+#include <system_error>
+
+#include "core/errors.h"
+
+namespace ssr::files {
+
+namespace fs = std::filesystem;
+
+void fail(std::string msg) {
+  for (char& c : msg)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  while (!msg.empty() && (msg.back() == ' ' || msg.back() == '.')) msg.pop_back();
+  throw InputError(msg + ".");
+}
+
+std::string q(std::string_view s) {
+  std::string r;
+  r.reserve(s.size() + 2);
+  r.append(1, '\'').append(s).append(1, '\'');
+  return r;
+}
+
+std::string read_file(const fs::path& path, std::uintmax_t cap, const std::string& what,
+                      const std::string& context) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) fail(context + what + " " + q(path) + " does not exist");
+  if (!fs::is_regular_file(st)) fail(context + what + " " + q(path) + " is not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) fail(context + what + " " + q(path) + " could not be read (" + ec.message() + ")");
+  if (size > cap)
+    fail(context + what + " " + q(path) + " is " + std::to_string(size) + " bytes, more than the " +
+         std::to_string(cap) + " supported");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(context + what + " " + q(path) + " could not be opened");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  if (in.gcount() != static_cast<std::streamsize>(size))
+    fail(context + what + " " + q(path) + " could not be read completely");
+  return text;
+}
+
+}  // namespace ssr::files

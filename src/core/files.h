@@ -1,0 +1,24 @@
+// Reading input files with one-sentence errors (ARCHITECTURE §7): scene files, meshes, textures,
+// viewer presets all come through here.
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace ssr::files {
+
+// Throws InputError with `msg` as one sentence: no control characters, one final full stop.
+[[noreturn]] void fail(std::string msg);
+
+// 'text' (built with append: GCC 12 warns wrongly about "'" + std::string at -O2, PR 105329).
+std::string q(std::string_view s);
+inline std::string q(const std::string& s) { return q(std::string_view(s)); }
+inline std::string q(const std::filesystem::path& p) { return q(std::string_view(p.native())); }
+
+// Reads a whole regular file of at most `cap` bytes. `what` names it ("OBJ file", ...);
+// `context` prefixes the messages (e.g. "MTL file 'x' line 3: ").
+std::string read_file(const std::filesystem::path& path, std::uintmax_t cap, const std::string& what,
+                      const std::string& context = "");
+
+}  // namespace ssr::files
