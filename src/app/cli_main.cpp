@@ -9,8 +9,9 @@
 #include "app/commands.h"
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
-#include "techniques/presets.h"
+#include "registry/presets.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 using namespace ssr;

@@ -14,12 +14,13 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "core/revision.h"
-#include "techniques/variants.h"
+#include "registry/variants.h"
 #include "eval/results.h"
 #include "eval/runner.h"
 #include "eval/svg_plot.h"
 #include "scene/scene_io.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 

@@ -17,9 +17,10 @@
 #include "render/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene_io.h"
-#include "techniques/presets.h"
+#include "registry/presets.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 

@@ -11,7 +11,7 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "core/revision.h"
-#include "techniques/variants.h"
+#include "registry/variants.h"
 #include "eval/grid.h"
 #include "eval/results.h"
 #include "eval/sequence.h"
@@ -19,6 +19,7 @@
 #include "render/image_io.h"
 #include "scene/scene_io.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 

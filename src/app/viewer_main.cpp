@@ -43,6 +43,7 @@
 #include "scene/scene_io.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 using namespace ssr;

@@ -15,6 +15,7 @@
 #include "core/files.h"
 #include "scene/scene_json.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "render/renderer.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

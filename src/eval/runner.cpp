@@ -8,6 +8,7 @@
 #include "shared/bindings.h"
 #include "shared/tonemap.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

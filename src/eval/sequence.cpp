@@ -12,6 +12,7 @@
 #include "eval/temporal.h"
 #include "scene/animation.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

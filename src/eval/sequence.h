@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "techniques/variants.h"
+#include "registry/variants.h"
 #include "eval/breakdown.h"
 #include "eval/metrics.h"
 #include "eval/runner.h"

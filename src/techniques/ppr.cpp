@@ -5,6 +5,7 @@
 // decode, patch holes from neighbours, fetch the reflected colour; normal maps and roughness
 // by the thesis's reprojection of the perturbed (or GGX-sampled) reflection vector.
 #include <algorithm>
+#include <stdexcept>
 #include <iterator>
 #include <string_view>
 
@@ -14,7 +15,18 @@
 #include "techniques/technique.h"
 
 namespace ssr {
+
+// The fallback tracers (their files' factories), in the order of the `fallback` choice below.
+std::unique_ptr<Technique> make_linear_technique();
+std::unique_ptr<Technique> make_linear_binary_technique();
+std::unique_ptr<Technique> make_dda_technique();
+std::unique_ptr<Technique> make_hiz_technique();
+
 namespace {
+
+using Factory = std::unique_ptr<Technique> (*)();
+constexpr Factory kFallbacks[] = {nullptr, make_linear_technique, make_linear_binary_technique, make_dda_technique,
+                                  make_hiz_technique};
 
 using P = shared::PprParams;
 const ParamDesc kTable[] = {
@@ -148,7 +160,8 @@ class PprTechnique final : public TechniqueWithParams<P> {
                                   [](const ParamDesc& d) { return std::string_view(d.name) == "fallback"; });
     const std::string name = row->choices[static_cast<std::size_t>(params_.fallback)];
     if (!fallback_ || fallback_->name() != name) {
-      fallback_ = create_technique(name);
+      fallback_ = kFallbacks[params_.fallback]();
+      if (fallback_->name() != name) throw std::logic_error("ppr: kFallbacks is not in the fallback choices' order");
       fallback_loaded_ = false;
     }
     return *fallback_;

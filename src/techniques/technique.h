@@ -1,8 +1,8 @@
-// The technique registry and the common shape of a technique (a Params table + run).
+// The common shape of a technique (a Params table + run).
 //
 // The interface itself (what a technique declares, reads and writes) is render/technique_api.h.
 // Adding a technique: one src/techniques/<name>.cpp (Params table + declare + run), its shaders
-// under shaders/techniques/, and one line in registry.cpp.
+// under shaders/techniques/, and one line in src/registry/registry.cpp.
 #pragma once
 #include <functional>
 #include <memory>
@@ -13,19 +13,6 @@
 #include "shared/bindings.h"
 
 namespace ssr {
-
-struct TechniqueInfo {
-  std::string name;
-  std::string description;  // one line for `ssrlab techniques`
-  std::function<std::unique_ptr<Technique>()> create;  // no GL needed
-};
-
-// Every technique, in the order `ssrlab techniques` lists them.
-const std::vector<TechniqueInfo>& technique_registry();
-// The named technique's entry; throws InputError listing the known names.
-const TechniqueInfo& technique_info(const std::string& name);
-// Creates the named technique; throws InputError listing the known names.
-std::unique_ptr<Technique> create_technique(const std::string& name);
 
 // The common shape of a technique: a Params struct P with defaults and its table.
 template <class P>

@@ -13,6 +13,7 @@
 #include "techniques/technique.h"
 #include "tracer_test_util.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -10,6 +10,7 @@
 #include "scene/builtin_scenes.h"
 #include "scene/meshgen.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 using ssr::test::texel;

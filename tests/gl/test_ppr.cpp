@@ -13,6 +13,7 @@
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -11,6 +11,7 @@
 #include "gl_test_env.h"
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 namespace fs = std::filesystem;

@@ -7,6 +7,7 @@
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -10,7 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/cli_common.h"
-#include "techniques/variants.h"
+#include "registry/variants.h"
 #include "eval/runner.h"
 #include "eval/sequence.h"
 #include "scene/animation.h"
@@ -25,6 +25,7 @@
 #include "techniques/stochastic.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 using test::add_mesh;

@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "core/cli_common.h"
-#include "techniques/variants.h"
+#include "registry/variants.h"
 #include "eval/runner.h"
 #include "gl_test_env.h"
 #include "render/renderer.h"
@@ -15,6 +15,7 @@
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -13,6 +13,7 @@
 #include "scene/animation.h"
 #include "scene_builders.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 using test::add_mesh;

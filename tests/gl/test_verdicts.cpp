@@ -16,6 +16,7 @@
 #include "core/cli_common.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -8,6 +8,7 @@
 #include "eval/runner.h"
 #include "scene/scene_io.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace ssr::test {
 

@@ -10,6 +10,7 @@
 #include "imgui_harness.h"
 #include "scene/scene_io.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 namespace ssr {
 namespace {

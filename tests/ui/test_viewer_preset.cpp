@@ -12,6 +12,7 @@
 #include "app/viewer_preset.h"
 #include "core/errors.h"
 #include "scene/scene_io.h"
+#include "registry/registry.h"
 
 namespace fs = std::filesystem;
 

@@ -17,9 +17,9 @@ namespace {
 const fs::path kRoot = fs::path(SSRLAB_TEST_DATA) / ".." / "..";
 
 // The order of ARCHITECTURE §2, bottom first.
-const std::map<std::string, int> kLayer = {{"core", 0},       {"gl", 1},        {"scene", 1},
-                                           {"render", 2},     {"techniques", 3}, {"reference", 4},
-                                           {"eval", 5},       {"app", 6}};
+const std::map<std::string, int> kLayer = {{"core", 0},      {"gl", 1},         {"scene", 1},
+                                           {"render", 2},    {"techniques", 3}, {"reference", 4},
+                                           {"registry", 5},  {"eval", 6},       {"app", 7}};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 using namespace ssr;
 

@@ -1,13 +1,14 @@
-#include "techniques/variants.h"
+#include "registry/variants.h"
 
 #include <algorithm>
 #include <set>
 
 #include "core/cli_common.h"
 #include "core/errors.h"
-#include "techniques/presets.h"
+#include "registry/presets.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

@@ -1,5 +1,5 @@
 #include "core/errors.h"
-#include "techniques/technique.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

@@ -1,7 +1,8 @@
-#include "techniques/presets.h"
+#include "registry/presets.h"
 
 #include "core/errors.h"
 #include "techniques/technique.h"
+#include "registry/registry.h"
 
 namespace ssr {
 

@@ -1,0 +1,26 @@
+// Every technique by name: the screen-space ones (src/techniques) and the two oracles
+// (src/reference). Above both layers: what the programs, presets and variants look up.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/technique_api.h"
+
+namespace ssr {
+
+struct TechniqueInfo {
+  std::string name;
+  std::string description;  // one line for `ssrlab techniques`
+  std::function<std::unique_ptr<Technique>()> create;  // no GL needed
+};
+
+// Every technique, in the order `ssrlab techniques` lists them.
+const std::vector<TechniqueInfo>& technique_registry();
+// The named technique's entry; throws InputError listing the known names.
+const TechniqueInfo& technique_info(const std::string& name);
+// Creates the named technique; throws InputError listing the known names.
+std::unique_ptr<Technique> create_technique(const std::string& name);
+
+}  // namespace ssr
