@@ -4,13 +4,18 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "gl/program.h"
+#include "render/image_io.h"
 
 #include "gl/context.h"
 #include "eval/metrics.h"
@@ -56,6 +61,34 @@ inline gl::Program compile_test_shader(const std::string& name, const std::strin
     ~Remove() { fs::remove_all(dir); }
   } remove{dir};
   return gl::Program::compute(gl::ShaderSource(dir), "test/" + name + ".comp");
+}
+
+// Whether two float images are the same bit for bit. When not, the test fails and writes
+// <name>-a.png, <name>-b.png and <name>-diff.png (|a - b| x 16, tone-free) into
+// $SSRLAB_TEST_OUT (default: the system's temporary directory) and names them in the failure.
+inline bool expect_same_image(const RgbaImageF& a, const RgbaImageF& b, const std::string& name) {
+  if (a.width == b.width && a.height == b.height &&
+      std::equal(a.pixels.begin(), a.pixels.end(), b.pixels.begin(), b.pixels.end(),
+                 [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }))
+    return true;
+  namespace fs = std::filesystem;
+  const char* env = std::getenv("SSRLAB_TEST_OUT");
+  const fs::path dir = env && *env ? fs::path(env) : fs::temp_directory_path();
+  std::string file = name;
+  for (char& c : file)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '_';
+  auto to8 = [](const RgbaImageF& im, auto value) {
+    RgbaImage8 out{im.width, im.height, std::vector<std::uint8_t>(im.pixels.size())};
+    for (std::size_t i = 0; i < im.pixels.size(); ++i)
+      out.pixels[i] = (i & 3) == 3 ? 255 : static_cast<std::uint8_t>(std::clamp(value(i), 0.0f, 1.0f) * 255.0f + 0.5f);
+    return out;
+  };
+  write_png(dir / (file + "-a.png"), to8(a, [&](std::size_t i) { return a.pixels[i]; }));
+  write_png(dir / (file + "-b.png"), to8(b, [&](std::size_t i) { return b.pixels[i]; }));
+  if (a.pixels.size() == b.pixels.size())
+    write_png(dir / (file + "-diff.png"), to8(a, [&](std::size_t i) { return std::abs(a.pixels[i] - b.pixels[i]) * 16.0f; }));
+  ADD_FAILURE() << name << ": the images differ; written " << (dir / (file + "-{a,b,diff}.png")).string();
+  return false;
 }
 
 }  // namespace ssr::test

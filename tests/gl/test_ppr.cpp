@@ -282,8 +282,7 @@ TEST(Ppr, EachFrameStartsFromAnEmptyIntermediate) {
     fresh->load(r.shaders());
     r.render(FrameRequest(cams[f], FrameTime{f + 1, 0.0f}), *fresh, ViewMode::Final, nullptr);
     const RgbaImageF want = r.read_texture(r.reflection());
-    EXPECT_EQ(std::memcmp(running.pixels.data(), want.pixels.data(), want.pixels.size() * sizeof(float)), 0)
-        << "frame " << f + 1;
+    test::expect_same_image(running, want, "ppr-frame-" + std::to_string(f + 1));
   }
   test::expect_no_gl_errors();
 }
