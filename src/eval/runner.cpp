@@ -223,7 +223,7 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.result.floor_ms = floor_ms;
   ev.result.error = ev.score.error;
   ev.result.breakdown = ev.score.breakdown;
-  if (t->declare().telemetry) ev.result.telemetry = measure_telemetry(renderer, camera, variant);
+  ev.result.telemetry = measure_telemetry(renderer, camera, variant);  // none if it does not iterate
   return ev;
 }
 

@@ -37,19 +37,18 @@ void TileClassifier::classify_for_tracer(int width, int height, shared::Classify
 }
 
 void TileClassifier::prepare(glm::ivec2 size, const shared::ClassifyParams& p) {
+  // A list: its header (the indirect dispatch's arguments), then one packed word per entry.
+  auto ensure = [](gl::Buffer& list, std::size_t& capacity, std::size_t entries, const char* label) {
+    if (list && entries <= capacity) return;
+    static_assert(sizeof(shared::TileListHeader) == sizeof(shared::RayListHeader));
+    list = gl::make_buffer(label, static_cast<GLsizeiptr>(sizeof(shared::TileListHeader) + entries * sizeof(std::uint32_t)));
+    capacity = entries;
+  };
   const glm::ivec2 tiles = (size + CLASSIFY_TILE - 1) / CLASSIFY_TILE;
-  const std::size_t tile_capacity = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
-  if (!tiles_ || tile_capacity > tiles_capacity_) {
-    tiles_ = gl::make_buffer("classification tiles",
-                             static_cast<GLsizeiptr>(sizeof(shared::TileListHeader) + tile_capacity * sizeof(std::uint32_t)));
-    tiles_capacity_ = tile_capacity;
-  }
-  const std::size_t ray_capacity = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
-  if (!rays_ || ray_capacity > rays_capacity_) {
-    rays_ = gl::make_buffer("classification rays",
-                            static_cast<GLsizeiptr>(sizeof(shared::RayListHeader) + ray_capacity * sizeof(std::uint32_t)));
-    rays_capacity_ = ray_capacity;
-  }
+  ensure(tiles_, tiles_capacity_, static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y),
+         "classification tiles");
+  ensure(rays_, rays_capacity_, static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y),
+         "classification rays");
   if (!params_) params_ = gl::make_buffer("classification params", sizeof(shared::ClassifyParams));
   glNamedBufferSubData(params_.id(), 0, sizeof(p), &p);
   const shared::TileListHeader no_tiles{0, 1, 1, 0};
@@ -75,13 +74,6 @@ void TileClassifier::dispatch_rays() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_RAYS, rays_.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, rays_.id());
   glDispatchComputeIndirect(0);
-}
-
-shared::RayListHeader TileClassifier::read_ray_header() const {
-  shared::RayListHeader h{};
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(rays_.id(), 0, sizeof(h), &h);
-  return h;
 }
 
 shared::TileListHeader TileClassifier::read_header() const {

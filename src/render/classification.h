@@ -34,10 +34,8 @@ class TileClassifier {
   // Binds the ray list at SSBO_RAYS and dispatches a program of RAY_LIST_GROUP lanes a group
   // over it (glDispatchComputeIndirect).
   void dispatch_rays() const;
-  // Reads the headers back (stalls; for tests and the speed report): tiles listed, rays cast;
-  // texels in the ray list.
+  // Reads the header back (stalls; for tests and the speed report): tiles listed, rays cast.
   shared::TileListHeader read_header() const;
-  shared::RayListHeader read_ray_header() const;
   // The trace grid of a w x h frame at `divisor` (1 or 2): ceil(size / divisor).
   static glm::ivec2 trace_size(int w, int h, int divisor);
 

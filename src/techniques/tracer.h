@@ -39,10 +39,11 @@ class TracerTechnique : public TechniqueWithParams<P> {
   // The variant the current parameters run compiles here (so a compile error surfaces now); the
   // others, the classifier and the denoiser on first use.
   void load(const gl::ShaderSource& src) override {
-    gl::Program p = compile(src, this->params_.ray.compact != 0, this->params_.ray.denoise.enabled != 0);
+    const bool compact = this->params_.ray.compact != 0, denoise = this->params_.ray.denoise.enabled != 0;
+    gl::Program p = compile(src, compact, denoise);
     src_ = src;
     for (gl::Program& v : programs_) v = gl::Program();
-    programs_[variant(this->params_.ray.compact != 0, this->params_.ray.denoise.enabled != 0)] = std::move(p);
+    programs_[variant(compact, denoise)] = std::move(p);
     classifier_loaded_ = denoiser_loaded_ = false;
   }
 
