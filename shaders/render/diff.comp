@@ -2,18 +2,13 @@
 // scaled so that u_full_scale is the hottest colour. Pixels where A and B agree show A as a dim
 // grey, so that the picture keeps its context.
 #include "shared/bindings.h"
+#include "shared/colormap.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_DIFF_A) uniform sampler2D a_tex;  // RGBA8 display image of technique A
 layout(binding = TEX_DIFF_B) uniform sampler2D b_tex;  // RGBA8 display image of technique B
 layout(binding = IMG_DIFF_OUT, rgba8) uniform writeonly image2D out_heat;
 layout(location = 0) uniform float u_full_scale;
-
-// Black -> purple -> orange -> yellow (as display.comp's debug heat maps).
-vec3 heat(float t) {
-  t = clamp(t, 0.0, 1.0);
-  return clamp(vec3(1.6 * t, 1.6 * t * t, 0.5 * sin(3.14159 * t) + 0.2 * t * t * t), 0.0, 1.0);
-}
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

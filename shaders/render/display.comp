@@ -6,6 +6,7 @@
 #include "shared/display.h"
 #include "shared/classification.h"
 #include "shared/telemetry.h"
+#include "shared/colormap.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
@@ -25,17 +26,6 @@ layout(std430, binding = SSBO_TELEMETRY) readonly buffer TelemetryBlock {
   uint telemetry_hist[TELEMETRY_BINS];
   uint telemetry_pixels[];
 };
-
-// Hue from an angle (radians), full saturation.
-vec3 hue(float a) {
-  return clamp(abs(fract(a / 6.28318530718 + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
-}
-
-// Black -> purple -> orange -> yellow, for the debug heat maps.
-vec3 heat(float t) {
-  t = clamp(t, 0.0, 1.0);
-  return clamp(vec3(1.6 * t, 1.6 * t * t, 0.5 * sin(3.14159 * t) + 0.2 * t * t * t), 0.0, 1.0);
-}
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -77,29 +67,28 @@ void main() {
     else if (u_view == VIEW_ALBEDO) v = g.albedo;
     else if (u_view == VIEW_ROUGHNESS) v = vec3(g.roughness);
     else if (u_view == VIEW_METALLIC) v = vec3(g.metallic);
-    else if (u_view == VIEW_STEPS) v = heat(texelFetch(debug_tex, p, 0).x / 256.0);
+    else if (u_view == VIEW_STEPS) v = heat(texelFetch(debug_tex, p, 0).x / HEAT_STEPS_FULL);
     else if (u_view == VIEW_HITS) v = vec3(texelFetch(debug_tex, p, 0).y);
-    else if (u_view == VIEW_DISTANCE) v = heat(texelFetch(debug_tex, p, 0).z / 20.0);
+    else if (u_view == VIEW_DISTANCE) v = heat(texelFetch(debug_tex, p, 0).z / HEAT_DISTANCE_FULL);
     else if (u_view == VIEW_OFFSETS) v = vec3(0.5 + texelFetch(debug_tex, p, 0).xy * frame.viewport.zw, 0.5);
     else if (u_view == VIEW_HOLES) v = vec3(texelFetch(debug_tex, p, 0).zw, 0.0);
     else if (u_view == VIEW_MOTION) {
       vec2 m = texelFetch(motion_tex, p, 0).xy;
       float len = length(m);
-      v = len > 1e-4 ? hue(atan(m.y, m.x)) * clamp(len / 16.0, 0.0, 1.0) : vec3(0.0);
+      v = len > 1e-4 ? hue(atan(m.y, m.x)) * clamp(len / MOTION_FULL_PIXELS, 0.0, 1.0) : vec3(0.0);
     }
     else if (u_view == VIEW_CLASSES) {
-      const vec3 colours[4] = vec3[4](vec3(0.0), vec3(0.2, 0.35, 1.0), vec3(0.2, 0.85, 0.3), vec3(1.0, 0.85, 0.2));
-      v = colours[clamp(int(textureLod(stage_tex, pixel_to_uv(p), 0.0).r * CLASS_LEVELS + 0.5), 0, 3)];
+      v = tile_class_colour(clamp(int(textureLod(stage_tex, pixel_to_uv(p), 0.0).r * CLASS_LEVELS + 0.5), 0, 3));
     }
-    else if (u_view == VIEW_RAY_LENGTH) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 20.0);
+    else if (u_view == VIEW_RAY_LENGTH) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / HEAT_DISTANCE_FULL);
     else if (u_view == VIEW_VARIANCE) v = heat(sqrt(max(textureLod(stage_tex, pixel_to_uv(p), 0.0).r, 0.0)));
-    else if (u_view == VIEW_HISTORY) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / 32.0);
+    else if (u_view == VIEW_HISTORY) v = heat(textureLod(stage_tex, pixel_to_uv(p), 0.0).g / HEAT_HISTORY_FULL);
     else if (u_view == VIEW_ITERATIONS || u_view == VIEW_IDLE_LANES) {
       uint word = telemetry_pixels[p.y * int(telemetry.width) + p.x];
       v = word == 0u ? vec3(0.0)
-                     : heat(u_view == VIEW_ITERATIONS ? float(telemetry_iterations(word)) / 128.0 : telemetry_idle(word));
+                     : heat(u_view == VIEW_ITERATIONS ? float(telemetry_iterations(word)) / HEAT_ITERATIONS_FULL : telemetry_idle(word));
     }
-    else if (u_view == VIEW_MASK) v = is_reflective(g) ? (g.reflector > 0u ? vec3(1.0, 0.85, 0.3) : vec3(1.0)) : vec3(0.0);
+    else if (u_view == VIEW_MASK) v = mask_colour(is_reflective(g), g.reflector > 0u);
   }
   vec3 shown = hdr ? display_transform(v, frame.settings.y) : clamp(v, 0.0, 1.0);
   imageStore(out_display, p, vec4(shown, 1.0));

@@ -18,6 +18,24 @@ enum class ViewMode : int {
   Iterations = VIEW_ITERATIONS, IdleLanes = VIEW_IDLE_LANES,
 };
 
+// How to read a view: the viewer draws it as a colour bar or swatches next to the image.
+struct Legend {
+  enum Kind {
+    Radiance,  // HDR radiance through the display transform (exposure): no scale to read
+    Grey,      // value / full as grey
+    Heat,      // value / full through shared/colormap.h's heat()
+    Swatches,  // categories, one colour each
+    Encoded,   // a vector packed into rgb: the description says how
+  } kind = Radiance;
+  float full = 1.0f;       // Grey and Heat: the value drawn white / hottest (above: clamped)
+  const char* unit = "";   // of `full`
+  struct Swatch {
+    const char* name;
+    float r, g, b;         // display colour in [0, 1]
+  };
+  std::vector<Swatch> swatches;
+};
+
 struct ViewInfo {
   ViewMode mode;
   const char* name;         // as the CLI takes it
@@ -28,6 +46,7 @@ struct ViewInfo {
   // Shown from the per-ray telemetry (render/telemetry.h): the technique runs instrumented
   // (SSR_TELEMETRY) with a TelemetryBuffer bound. Offered for techniques that record it.
   bool telemetry = false;
+  Legend legend = {};
 };
 // Every view, in ViewMode order.
 const std::vector<ViewInfo>& view_table();

@@ -1,6 +1,7 @@
 // The shared headers with functions, compiled as GLSL, agree with their C++ twins over a buffer
 // of inputs: sampling.h (hash and random numbers bit for bit; the GGX VNDF sample, the basis and
-// the reflection within float rounding) and tonemap.h (the display transform). ppr_packing.h
+// the reflection within float rounding), tonemap.h (the display transform) and colormap.h (the
+// heat map, hue and category colours the views and the legends draw with). ppr_packing.h
 // has its own bit-exact test (test_ppr_packing.cpp).
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@
 #include "gl_test_env.h"
 #include "shared/sampling.h"
 #include "shared/tonemap.h"
+#include "shared/colormap.h"
 
 using namespace ssr;
 namespace sh = ssr::shared;
@@ -24,7 +26,7 @@ namespace sh = ssr::shared;
 namespace {
 
 struct TwinCase {
-  glm::vec4 n;         // xyz: a unit normal
+  glm::vec4 n;         // xyz: a unit normal; w: an angle in [-pi, pi] (hue)
   glm::vec4 v;         // xyz: a unit view direction; w: roughness
   glm::vec4 radiance;  // xyz: HDR radiance; w: exposure (stops)
   glm::uvec4 ids;      // x, y, index, seed
@@ -37,14 +39,20 @@ struct TwinResult {
   glm::vec4 tonemap;   // tonemap_aces(radiance)
   glm::vec4 srgb;      // linear_to_srgb(tonemap)
   glm::vec4 display;   // display_transform(radiance, exposure)
+  glm::vec4 heat;      // heat(v.w * 1.5 - 0.25): both clamps and the ramp
+  glm::vec4 hue;       // hue(n.w): n.w an angle in [-pi, pi]
+  glm::vec4 tile;      // tile_class_colour(ids.z % 5 - 1)
+  glm::vec4 mask;      // mask_colour(ids.w & 1, ids.w & 2)
 };
-static_assert(sizeof(TwinCase) == 64 && sizeof(TwinResult) == 144);
+static_assert(sizeof(TwinCase) == 64 && sizeof(TwinResult) == 208);
 
 const char* kShader = R"glsl(#include "shared/sampling.h"
 #include "shared/tonemap.h"
+#include "shared/colormap.h"
 layout(local_size_x = 64) in;
 struct TwinCase { vec4 n; vec4 v; vec4 radiance; uvec4 ids; };
-struct TwinResult { uvec4 hashes; vec4 basis[3]; vec4 vndf; vec4 reflection; vec4 tonemap; vec4 srgb; vec4 display; };
+struct TwinResult { uvec4 hashes; vec4 basis[3]; vec4 vndf; vec4 reflection; vec4 tonemap; vec4 srgb; vec4 display;
+                    vec4 heat; vec4 hue; vec4 tile; vec4 mask; };
 layout(std430, binding = 0) readonly buffer Cases { TwinCase cases[]; };
 layout(std430, binding = 1) writeonly buffer Results { TwinResult results[]; };
 void main() {
@@ -63,6 +71,10 @@ void main() {
   results[i].tonemap = vec4(t, 0.0);
   results[i].srgb = vec4(linear_to_srgb(t), 0.0);
   results[i].display = vec4(display_transform(c.radiance.xyz, c.radiance.w), 0.0);
+  results[i].heat = vec4(heat(c.v.w * 1.5 - 0.25), 0.0);
+  results[i].hue = vec4(hue(c.n.w), 0.0);
+  results[i].tile = vec4(tile_class_colour(int(c.ids.z % 5u) - 1), 0.0);
+  results[i].mask = vec4(mask_colour((c.ids.w & 1u) != 0u, (c.ids.w & 2u) != 0u), 0.0);
 }
 )glsl";
 
@@ -85,6 +97,10 @@ TwinResult cpu_result(const TwinCase& c) {
   r.tonemap = glm::vec4(t, 0.0f);
   r.srgb = glm::vec4(sh::linear_to_srgb(t), 0.0f);
   r.display = glm::vec4(sh::display_transform(glm::vec3(c.radiance), c.radiance.w), 0.0f);
+  r.heat = glm::vec4(sh::heat(c.v.w * 1.5f - 0.25f), 0.0f);
+  r.hue = glm::vec4(sh::hue(c.n.w), 0.0f);
+  r.tile = glm::vec4(sh::tile_class_colour(static_cast<int>(c.ids.z % 5u) - 1), 0.0f);
+  r.mask = glm::vec4(sh::mask_colour((c.ids.w & 1u) != 0u, (c.ids.w & 2u) != 0u), 0.0f);
   return r;
 }
 
@@ -111,7 +127,7 @@ std::vector<TwinCase> make_cases() {
     if (glm::dot(v, n) < 0.0f) v = -v;  // views from the surface's side, some grazing
     const float rough = i % 7 == 0 ? 0.0f : unit(rng);
     const glm::vec3 rad(unit(rng) * 8.0f, unit(rng) * unit(rng), i % 11 == 0 ? 0.0f : unit(rng) * 100.0f);
-    cases.push_back({glm::vec4(n, 0), glm::vec4(v, rough), glm::vec4(rad, stops(rng)),
+    cases.push_back({glm::vec4(n, u(rng) * 3.14159265f), glm::vec4(v, rough), glm::vec4(rad, stops(rng)),
                      glm::uvec4(any(rng) % 8192u, any(rng) % 8192u, any(rng) % 64u, any(rng))});
   }
   return cases;
@@ -126,9 +142,9 @@ float max_diff(glm::vec4 a, glm::vec4 b) {
 
 // Tolerances for the float functions: the GLSL compiler may contract a*b+c into fma and use its
 // own sqrt/sin/cos/pow; measured on llvmpipe (LLVM 15), 4020 cases: basis 1.2e-7, vndf 1.6e-5,
-// reflection 5.2e-6, tonemap 2.4e-7, srgb 3.6e-7, display 3.6e-7. The bounds (6x and more) leave
+// reflection 5.2e-6, tonemap 2.4e-7, srgb 3.6e-7, display 3.6e-7, heat 6e-8, hue 0. The bounds (6x and more) leave
 // room for a GPU's transcendentals.
-TEST(SharedTwins, SamplingAndTonemapGlslMatchCpp) {
+TEST(SharedTwins, SamplingTonemapAndColormapGlslMatchCpp) {
   const gl::Program prog = test::compile_test_shader("twins", kShader);
   const std::vector<TwinCase> cases = make_cases();
   const auto n = static_cast<GLsizeiptr>(cases.size());
@@ -144,7 +160,7 @@ TEST(SharedTwins, SamplingAndTonemapGlslMatchCpp) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
 
   std::size_t bad_bits = 0;
-  float basis = 0, vndf = 0, refl = 0, tonemap = 0, srgb = 0, display = 0;
+  float basis = 0, vndf = 0, refl = 0, tonemap = 0, srgb = 0, display = 0, heat = 0, hue = 0, swatches = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const TwinResult c = cpu_result(cases[i]);
     const TwinResult& g = gpu[i];
@@ -158,15 +174,22 @@ TEST(SharedTwins, SamplingAndTonemapGlslMatchCpp) {
     tonemap = std::max(tonemap, max_diff(g.tonemap, c.tonemap));
     srgb = std::max(srgb, max_diff(g.srgb, c.srgb));
     display = std::max(display, max_diff(g.display, c.display));
+    heat = std::max(heat, max_diff(g.heat, c.heat));
+    hue = std::max(hue, max_diff(g.hue, c.hue));
+    swatches = std::max({swatches, max_diff(g.tile, c.tile), max_diff(g.mask, c.mask)});
   }
   std::printf("shared twins: %zu cases; max |gpu - cpu|: basis %.2g, vndf %.2g, reflection %.2g, tonemap %.2g, "
-              "srgb %.2g, display %.2g\n", cases.size(), basis, vndf, refl, tonemap, srgb, display);
+              "srgb %.2g, display %.2g, heat %.2g, hue %.2g, swatches %.2g\n", cases.size(), basis, vndf, refl, tonemap,
+              srgb, display, heat, hue, swatches);
   EXPECT_EQ(bad_bits, 0u);
   EXPECT_LE(basis, 1e-5f);
   EXPECT_LE(vndf, 1e-4f);
   EXPECT_LE(refl, 1e-4f);
   EXPECT_LE(tonemap, 1e-5f);
   EXPECT_LE(srgb, 1e-4f);
+  EXPECT_LE(heat, 1e-5f);
+  EXPECT_LE(hue, 1e-4f);
+  EXPECT_EQ(swatches, 0.0f);  // constants chosen by branches: exact
   EXPECT_LE(display, 1e-4f);
   test::expect_no_gl_errors();
 }
