@@ -24,8 +24,9 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
   std::vector<ParamDesc> t(own);
   t.push_back(at({"samples", ParamType::Int, 0, 1, 16, 1, "rays",
                   "GGX VNDF rays per rough pixel (mirror pixels trace one)."}, offsetof(R, samples)));
-  t.push_back(at({"roughness", ParamType::Float, 0, -1, 1, 0.01, "",
-                  "Override the G-buffer roughness everywhere (-1 keeps the material's)."}, offsetof(R, roughness)));
+  t.push_back(at(with_auto({"roughness", ParamType::Float, 0, 0, 1, 0.01, "",
+                            "Override the G-buffer roughness everywhere (auto keeps each material's)."}, -1.0),
+                 offsetof(R, roughness)));
   t.push_back(at({"backface_thickness", ParamType::Bool, 0, 0, 1, 1, "",
                   "Thickness from a back-face depth buffer: a hit lies between front and back faces."},
                  offsetof(R, backface_thickness)));

@@ -81,7 +81,7 @@ TEST(Tracers, HardCasesStayFiniteAndBounded) {
                         {"cornell", "default", 8.0}, {"glass", "close", 8.0}};
   // The shared options too: rough lobes (roughness 1, 4 samples), back-face thickness, fades.
   const std::vector<std::vector<std::string>> options = {
-      {"roughness=-1"}, {"roughness=1", "samples=4"}, {"backface_thickness=true"},
+      {"roughness=auto"}, {"roughness=1", "samples=4"}, {"backface_thickness=true"},
       {"edge_fade=true", "falloff_distance=5"}};
   for (const TracerCase& c : kTracers)
     for (const Hard& h : cases)
