@@ -30,7 +30,7 @@ const std::vector<TechniqueInfo>& technique_registry() {
        "spatial/temporal/bilateral denoiser",
        make_stochastic_technique},
       {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
-       make_reference_technique},
+       make_reference_technique, /*truth=*/true, /*on_demand=*/true},
       {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",
        make_planar_technique},
   };

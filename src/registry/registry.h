@@ -14,6 +14,9 @@ struct TechniqueInfo {
   std::string name;
   std::string description;  // one line for `ssrlab techniques`
   std::function<std::unique_ptr<Technique>()> create;  // no GL needed
+  // What kind of technique it is: flags that the commands and the viewer read, never names.
+  bool truth = false;      // the ground truth every score is taken against: never in "all", never swept
+  bool on_demand = false;  // too slow for every frame (CPU ray tracing): the viewer runs it when asked
 };
 
 // Every technique, in the order `ssrlab techniques` lists them.

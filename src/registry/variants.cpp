@@ -54,6 +54,13 @@ std::vector<std::string> sets_for(const std::string& technique, const std::vecto
   return out;
 }
 
+// The truth's parameters may be set whatever runs (an unknown name is no technique's: false).
+static bool is_truth(const std::string& name) {
+  for (const TechniqueInfo& t : technique_registry())
+    if (t.name == name) return t.truth;
+  return false;
+}
+
 std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
                                     const std::vector<std::string>& sets,
                                     const std::vector<std::string>& sweeps,
@@ -62,7 +69,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   for (const std::string& t : techniques) create_technique(t);  // unknown names throw
   auto check_owner = [&](const std::string& key) {
     const std::string t = technique_of(key);
-    if (t != "reference" && !running.count(t))
+    if (!running.count(t) && !is_truth(t))
       throw InputError("parameter '" + key + "' belongs to technique '" + t + "', which is not being run.");
   };
   for (const std::string& s : sets) check_owner(split_assignment(s).first);
@@ -72,7 +79,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   for (const std::string& s : sweeps) {
     auto [key, values] = split_assignment(s);
     check_owner(key);
-    if (technique_of(key) == "reference") throw InputError("the reference cannot be swept.");
+    if (is_truth(technique_of(key))) throw InputError("the reference cannot be swept.");
     sweep_of[technique_of(key)].push_back({key, split_list(values, "sweep")});
   }
 
@@ -120,7 +127,7 @@ std::vector<std::string> technique_names(const std::string& list, const std::vec
   if (!list.empty()) return split_list(list, "technique");
   std::vector<std::string> names;
   for (const TechniqueInfo& t : technique_registry())
-    if (t.name != "reference" && std::find(also_left_out.begin(), also_left_out.end(), t.name) == also_left_out.end())
+    if (!t.truth && std::find(also_left_out.begin(), also_left_out.end(), t.name) == also_left_out.end())
       names.push_back(t.name);
   return names;
 }
