@@ -1419,6 +1419,20 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
     std::vector<BuiltinSceneInfo> v;
     for (const Entry& e : entries()) {
       v.push_back(e.info);
+      for (const OptionSpec& o : e.options) {
+        BuiltinSceneInfo::Option opt{o.key, o.default_value, o.choices};
+        if (o.choices.empty()) {
+          const std::vector<double> picks = o.number ? std::vector<double>{0.0, 0.1, 0.25, 0.5, 1.0}
+                                                     : std::vector<double>{1, 2, 4, 5, 8, 16};
+          for (double x : picks)
+            if (x >= o.min && x <= o.max) {
+              char buf[32];
+              std::snprintf(buf, sizeof buf, "%g", x);
+              opt.values.push_back(buf);
+            }
+        }
+        v.back().options.push_back(std::move(opt));
+      }
       // The camera paths, from the path option (the same names the scene has).
       for (const OptionSpec& o : e.options)
         if (o.key == "path")
