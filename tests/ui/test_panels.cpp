@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "app/panels.h"
+#include "viewer/panels.h"
 #include "imgui_harness.h"
 #include "scene/scene_io.h"
 #include "techniques/technique.h"

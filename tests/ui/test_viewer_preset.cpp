@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/viewer_preset.h"
+#include "viewer/preset.h"
 #include "core/errors.h"
 #include "scene/scene_io.h"
 #include "registry/registry.h"

@@ -1,7 +1,11 @@
 // The viewer's script parser: every line checked before the window opens.
 #include <gtest/gtest.h>
 
-#include "app/viewer_script.h"
+#include <algorithm>
+#include <cstring>
+#include <set>
+
+#include "viewer/commands.h"
 #include "core/errors.h"
 
 using namespace ssr;
@@ -25,10 +29,10 @@ TEST(ViewerScript, ParsesCommandsCommentsAndLines) {
       "compare split\nsplit 0.25\nview traceable\nresize 200x120\nminimise\nscreenshot a.png\n",
       "s.txt");
   ASSERT_EQ(cmds.size(), 9u);
-  EXPECT_EQ(cmds[0].verb, "technique");
+  EXPECT_EQ(cmds[0].verb, Verb::Technique);
   EXPECT_EQ(cmds[0].args, std::vector<std::string>{"hiz"});
   EXPECT_EQ(cmds[0].line, 3);
-  EXPECT_EQ(cmds[7].verb, "minimise");
+  EXPECT_EQ(cmds[7].verb, Verb::Minimise);
   EXPECT_TRUE(cmds[7].args.empty());
   EXPECT_EQ(cmds[8].line, 11);
 }
@@ -56,4 +60,24 @@ TEST(ViewerScript, RejectsBadLinesNamingFileAndLine) {
 TEST(ViewerScript, MissingFileIsInputError) {
   EXPECT_THROW(load_viewer_script("/nonexistent/script.txt"), InputError);
   EXPECT_THROW(load_viewer_script("/tmp"), InputError);
+}
+
+// The command list is one table: names unique, each with help, in Verb order, and the help
+// table (the README's) has one row per command.
+TEST(ViewerScript, CommandTableIsComplete) {
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < kCommandCount; ++i) {
+    const CommandInfo& c = kCommands[i];
+    EXPECT_TRUE(names.insert(c.name).second) << c.name << " twice";
+    EXPECT_GT(std::strlen(c.help), 10u) << c.name;
+    EXPECT_EQ(&command_info(c.verb), &c);
+    EXPECT_EQ((c.form == ArgForm::None), (*c.args == '\0')) << c.name << ": the help's ARGS and the form disagree";
+  }
+  const std::string md = commands_markdown();
+  EXPECT_EQ(static_cast<std::size_t>(std::count(md.begin(), md.end(), '\n')), kCommandCount + 2);
+  const auto cmds = parse_viewer_script("truth manual\nwindow-shot w.png\npanel off\nswap\nstatus\n", "s.txt");
+  ASSERT_EQ(cmds.size(), 5u);
+  EXPECT_EQ(cmds[0].verb, Verb::Truth);
+  EXPECT_NE(error_of("truth sometimes\n").find("now, rest, live, manual"), std::string::npos);
+  EXPECT_NE(error_of("panel maybe\n").find("on or off"), std::string::npos);
 }

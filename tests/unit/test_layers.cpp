@@ -19,7 +19,8 @@ const fs::path kRoot = fs::path(SSRLAB_TEST_DATA) / ".." / "..";
 // The order of ARCHITECTURE §2, bottom first.
 const std::map<std::string, int> kLayer = {{"core", 0},      {"gl", 1},         {"scene", 1},
                                            {"render", 2},    {"techniques", 3}, {"reference", 4},
-                                           {"registry", 5},  {"eval", 6},       {"app", 7}};
+                                           {"registry", 5},  {"eval", 6},       {"app", 7},
+                                           {"viewer", 7}};
 
 }  // namespace
 

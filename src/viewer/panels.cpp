@@ -1,4 +1,4 @@
-#include "app/panels.h"
+#include "viewer/panels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +40,9 @@ bool draw_param_panel(ParamSet& params) {
       ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
     }
     ImGui::BeginDisabled(params.is_auto(i));
+    // A value off its default is drawn highlighted: what was changed is seen at a glance.
+    const bool changed_from_default = before != params.get_default(i);
+    if (changed_from_default) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.82f, 0.35f, 1.0f));
     switch (d.type) {
       case ParamType::Float: {
         float v = static_cast<float>(before);
@@ -68,6 +71,7 @@ bool draw_param_panel(ParamSet& params) {
         break;
       }
     }
+    if (changed_from_default) ImGui::PopStyleColor();
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
       ImGui::SetTooltip("%s\n%s%s%s\nrange %s, default %s", params.key(i).c_str(), d.help,

@@ -1,4 +1,4 @@
-#include "app/viewer_preset.h"
+#include "viewer/preset.h"
 
 #include <algorithm>
 #include <charconv>

@@ -1,13 +1,12 @@
-#include "app/viewer_script.h"
+#include "viewer/commands.h"
 
 #include <algorithm>
 
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <sstream>
 
-#include "app/viewer_preset.h"
+#include "viewer/preset.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "render/renderer.h"
@@ -17,23 +16,6 @@
 namespace ssr {
 
 namespace {
-
-enum class Arg { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png };
-
-// verb -> the form of its one argument (Arg::None: no argument).
-const std::map<std::string, Arg>& verbs() {
-  static const std::map<std::string, Arg> v = {
-      {"scene", Arg::Text},       {"camera", Arg::Text},        {"technique", Arg::Technique},
-      {"technique-b", Arg::Technique}, {"set", Arg::Assignment}, {"compare", Arg::Compare},
-      {"split", Arg::Fraction},   {"view", Arg::View},          {"exposure", Arg::Number},
-      {"ambient", Arg::NonNegative}, {"frames", Arg::Count},    {"screenshot", Arg::Png},
-      {"preset-save", Arg::Text}, {"preset-load", Arg::Text},   {"resize", Arg::Size},
-      {"minimise", Arg::None},    {"restore", Arg::None},       {"reload", Arg::None},
-      {"path", Arg::Text},        {"time", Arg::NonNegative},   {"play", Arg::None},
-      {"pause", Arg::None},
-  };
-  return v;
-}
 
 double number(const std::string& s, const std::string& at) {
   std::size_t used = 0;
@@ -47,32 +29,32 @@ double number(const std::string& s, const std::string& at) {
   return v;
 }
 
-void check(Arg kind, const std::string& a, const std::string& at) {
+void check(ArgForm kind, const std::string& a, const std::string& at) {
   switch (kind) {
-    case Arg::None:
-    case Arg::Text: return;
-    case Arg::Technique: create_technique(a); return;  // throws naming the known ones
-    case Arg::Number: number(a, at); return;
-    case Arg::NonNegative:
+    case ArgForm::None:
+    case ArgForm::Text: return;
+    case ArgForm::Technique: create_technique(a); return;  // throws naming the known ones
+    case ArgForm::Number: number(a, at); return;
+    case ArgForm::NonNegative:
       if (number(a, at) < 0) throw InputError(at + "'" + a + "' must be >= 0.");
       return;
-    case Arg::Fraction: {
+    case ArgForm::Fraction: {
       const double v = number(a, at);
       if (v < 0 || v > 1) throw InputError(at + "'" + a + "' must be in [0,1].");
       return;
     }
-    case Arg::Count: {
+    case ArgForm::Count: {
       const double v = number(a, at);
       if (v < 1 || v > 100000 || v != std::floor(v))
         throw InputError(at + "'" + a + "' must be a whole number of frames in [1,100000].");
       return;
     }
-    case Arg::Size: parse_size(a); return;
-    case Arg::Compare:
+    case ArgForm::Size: parse_size(a); return;
+    case ArgForm::Compare:
       if (a != "off" && a != "split" && a != "diff")
         throw InputError(at + "compare mode '" + a + "' is not one of off, split, diff.");
       return;
-    case Arg::View: {
+    case ArgForm::View: {
       const auto& names = viewer_view_names();
       if (std::find(names.begin(), names.end(), a) == names.end()) {
         std::string known;
@@ -81,14 +63,35 @@ void check(Arg kind, const std::string& a, const std::string& at) {
       }
       return;
     }
-    case Arg::Assignment: {
+    case ArgForm::Assignment: {
       const auto dot = a.find('.'), eq = a.find('=');
       if (dot == std::string::npos || eq == std::string::npos || dot > eq)
         throw InputError(at + "'" + a + "' is not of the form technique.key=value.");
       create_technique(a.substr(0, dot));
       return;
     }
-    case Arg::Png:
+    case ArgForm::OnOff:
+      if (a != "on" && a != "off") throw InputError(at + "'" + a + "' is not on or off.");
+      return;
+    case ArgForm::TruthPolicy:
+      if (a != "now" && a != "rest" && a != "live" && a != "manual")
+        throw InputError(at + "'" + a + "' is not one of now, rest, live, manual.");
+      return;
+    case ArgForm::Pixel: {  // "X Y": parse_viewer_script joins the two words
+      const auto space = a.find(' ');
+      for (const std::string& v : {a.substr(0, space), a.substr(space + 1)}) {
+        const double n = number(v, at);
+        if (n < 0 || n != std::floor(n) || n > 65535) throw InputError(at + "'" + v + "' is not a pixel coordinate.");
+      }
+      return;
+    }
+    case ArgForm::Zoom: {
+      if (a == "off") return;
+      const double v = number(a, at);
+      if (v < 2 || v > 16 || v != std::floor(v)) throw InputError(at + "zoom '" + a + "' must be off or a whole number in [2,16].");
+      return;
+    }
+    case ArgForm::Png:
       if (std::filesystem::path(a).extension() != ".png")
         throw InputError(at + "screenshot '" + a + "' must end in .png.");
       return;
@@ -96,6 +99,26 @@ void check(Arg kind, const std::string& a, const std::string& at) {
 }
 
 }  // namespace
+
+const CommandInfo& command_info(Verb verb) { return kCommands[static_cast<std::size_t>(verb)]; }
+
+// The table is in Verb order (command_info indexes it).
+static_assert([] {
+  for (std::size_t i = 0; i < kCommandCount; ++i)
+    if (static_cast<std::size_t>(kCommands[i].verb) != i) return false;
+  return true;
+}());
+
+std::string commands_markdown() {
+  std::string out = "| command | what it does |\n|---|---|\n";
+  auto cell = [](std::string s) {  // a '|' inside a cell ends it in Markdown
+    for (std::size_t at = 0; (at = s.find('|', at)) != std::string::npos; at += 2) s.insert(at, "\\");
+    return s;
+  };
+  for (const CommandInfo& c : kCommands)
+    out += "| `" + cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + cell(c.help) + " |\n";
+  return out;
+}
 
 std::string script_where(const std::string& file, const ScriptCommand& c) {
   return file + ":" + std::to_string(c.line) + ": ";
@@ -110,17 +133,21 @@ std::vector<ScriptCommand> parse_viewer_script(const std::string& text, const st
     std::istringstream words(line);
     ScriptCommand c;
     c.line = n;
-    if (!(words >> c.verb)) continue;
+    std::string verb;
+    if (!(words >> verb)) continue;
     for (std::string w; words >> w;) c.args.push_back(w);
     const std::string at = script_where(where, c);
-    const auto v = verbs().find(c.verb);
-    if (v == verbs().end()) throw InputError(at + "unknown command '" + c.verb + "'.");
-    const std::size_t want = v->second == Arg::None ? 0 : 1;
+    const auto v = std::find_if(std::begin(kCommands), std::end(kCommands),
+                                [&](const CommandInfo& k) { return verb == k.name; });
+    if (v == std::end(kCommands)) throw InputError(at + "unknown command '" + verb + "'.");
+    c.verb = v->verb;
+    const std::size_t want = v->form == ArgForm::None ? 0 : v->form == ArgForm::Pixel ? 2 : 1;
     if (c.args.size() != want)
-      throw InputError(at + "'" + c.verb + "' takes " + (want ? "one argument" : "no argument") + ", not " +
-                       std::to_string(c.args.size()) + ".");
+      throw InputError(at + "'" + verb + "' takes " + (want == 0 ? "no argument" : want == 1 ? "one argument" : "two arguments") +
+                       ", not " + std::to_string(c.args.size()) + ".");
+    if (want == 2) c.args = {c.args[0] + " " + c.args[1]};  // one argument for the handler
     try {
-      if (want) check(v->second, c.args[0], at);
+      if (want) check(v->form, c.args[0], at);
     } catch (const InputError& e) {
       const std::string msg = e.what();
       throw InputError(msg.rfind(where, 0) == 0 ? msg : at + msg);

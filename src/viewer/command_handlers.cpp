@@ -1,0 +1,140 @@
+// One handler per command of commands.h. Scripts, keys and buttons all come through execute(),
+// so a button does exactly what its script line does.
+#include <algorithm>
+#include <cstdio>
+
+#include "gl/gl.h"
+#include <GLFW/glfw3.h>
+#include <nlohmann/json.hpp>
+
+#include "core/cli_common.h"
+#include "core/errors.h"
+#include "scene/animation.h"
+#include "viewer/viewer.h"
+
+namespace ssr {
+
+void Viewer::execute(const ScriptCommand& c) {
+  // Built from the same list as the commands: a command without a handler does not link.
+  using Handler = void (Viewer::*)(const std::string&);
+  static constexpr Handler kHandlers[] = {
+#define SSRLAB_X(id, verb, form, args, help) &Viewer::on_##id,
+      SSRLAB_VIEWER_COMMANDS(SSRLAB_X)
+#undef SSRLAB_X
+  };
+  static_assert(std::size(kHandlers) == kCommandCount);
+  (this->*kHandlers[static_cast<std::size_t>(c.verb)])(c.args.empty() ? std::string() : c.args[0]);
+}
+
+void Viewer::on_Scene(const std::string& a) { load_scene_spec(a, ""); }
+
+void Viewer::on_Camera(const std::string& a) {
+  auto it = std::find_if(cameras_.begin(), cameras_.end(), [&](const Camera& k) { return k.name == a; });
+  if (it == cameras_.end()) throw InputError("the scene has no camera '" + a + "'.");
+  camera_.set(*it);
+}
+
+void Viewer::on_Technique(const std::string& a) { set_technique(sides_[0], a); }
+void Viewer::on_TechniqueB(const std::string& a) { set_technique(sides_[1], a); }
+void Viewer::on_Set(const std::string& a) { apply_sets({a}); }
+
+void Viewer::on_Swap(const std::string&) {
+  std::swap(sides_[0], sides_[1]);
+  psnr_key_.clear();
+}
+
+void Viewer::on_Compare(const std::string& a) {
+  compare_ = a == "split" ? CompareSplit : a == "diff" ? CompareDiff : CompareOff;
+}
+
+void Viewer::on_Split(const std::string& a) {
+  split_ = std::stof(a);
+  compare_ = CompareSplit;
+}
+
+void Viewer::on_View(const std::string& a) {
+  view_ = a == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(a));
+}
+
+void Viewer::on_Exposure(const std::string& a) { renderer_->settings.exposure = std::stof(a); }
+void Viewer::on_Ambient(const std::string& a) { set_lighting(lights_, environment_, std::stof(a)); }
+void Viewer::on_Frames(const std::string& a) { frames_left_ = std::stoi(a); }
+void Viewer::on_Screenshot(const std::string& a) { save(a); }
+
+void Viewer::on_PresetSave(const std::string& a) {
+  save_preset(a, capture_preset());
+  set_status("preset saved to " + a, false);
+  std::printf("ssrlab-view: %s\n", status_.c_str());
+}
+
+void Viewer::on_PresetLoad(const std::string& a) {
+  apply_preset(load_preset(a));
+  set_status("preset loaded from " + a, false);
+}
+
+void Viewer::on_Resize(const std::string& a) {
+  const auto [w, h] = parse_size(a);
+  window_->set_size(w + (panel_shown_ ? static_cast<int>(panel_w_) : 0), h + static_cast<int>(kStatusH));
+}
+
+void Viewer::on_Minimise(const std::string&) { glfwIconifyWindow(window_->handle()); }
+void Viewer::on_Restore(const std::string&) { glfwRestoreWindow(window_->handle()); }
+void Viewer::on_Panel(const std::string& a) { panel_shown_ = a == "on"; }
+void Viewer::on_Reload(const std::string&) { reload(); }
+
+void Viewer::on_Path(const std::string& a) {
+  if (a == "free") path_ = -1;
+  else {
+    const Animation& anim = renderer_->scene().animation;
+    find_path(renderer_->scene(), a);  // throws InputError naming the paths
+    for (std::size_t i = 0; i < anim.paths.size(); ++i)
+      if (anim.paths[i].name == a) path_ = static_cast<int>(i);
+  }
+  set_time(time_);
+}
+
+void Viewer::on_Time(const std::string& a) { set_time(std::stof(a)); }
+void Viewer::on_Play(const std::string&) { playing_ = true; }
+void Viewer::on_Pause(const std::string&) { playing_ = false; }
+
+void Viewer::on_Truth(const std::string& a) {
+  if (a == "now") {
+    for (int i = 0; i < 2; ++i)
+      if (on_demand(i) && !side_current(i)) sides_[i].request = 2;
+  } else {
+    truth_policy_ = a == "live" ? TruthPolicy::Live : a == "rest" ? TruthPolicy::Rest : TruthPolicy::Manual;
+  }
+}
+
+// Draws one more frame and saves the whole window as presented.
+void Viewer::on_WindowShot(const std::string& a) {
+  window_shot_ = a;
+  frame(0.0);
+}
+
+void Viewer::on_Inspect(const std::string& a) {
+  const auto space = a.find(' ');
+  const nlohmann::json j = inspect(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
+  std::printf("ssrlab-view: inspect %s\n", j.dump().c_str());
+  std::fflush(stdout);
+}
+
+void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : std::stoi(a); }
+
+// What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
+// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr"}.
+void Viewer::on_Status(const std::string&) {
+  nlohmann::json j;
+  j["message"] = status_;
+  j["error"] = status_error_;
+  j["device"] = window_->info().renderer;
+  j["clock"] = clock_ == gl::PassTimer::Clock::Gpu ? "gpu" : "cpu";
+  j["frame_ms"] = frame_ms_.empty() ? 0.0 : frame_ms_.back();
+  j["image"] = {image_w_, image_h_};
+  j["truth"] = truth_state();
+  j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
+  std::printf("ssrlab-view: status %s\n", j.dump().c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace ssr

@@ -1,0 +1,95 @@
+// The viewer's commands: everything a script line, a key or a button can ask the viewer to do,
+// declared once in SSRLAB_VIEWER_COMMANDS below. That one list gives
+//   - the script language (--script FILE): one command per line, '#' starts a comment;
+//   - the checks every line passes before the window opens (form and count of its arguments);
+//   - the help (`ssrlab-view --help-script`) and the README's table;
+//   - the handlers: the viewer declares `on_<Id>` for each entry and dispatches through a table
+//     built from the same list, so a command without a handler fails to link.
+//
+// The whole script is checked before the window opens: an unknown command or a bad argument is
+// an InputError naming the file and line. Errors while running (a scene that does not load) are
+// InputErrors too, with the line.
+#pragma once
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+// X(Id, "verb", ArgForm, "ARGS", "what it does")
+#define SSRLAB_VIEWER_COMMANDS(X)                                                                        \
+  X(Scene, "scene", Text, "NAME|PATH", "load a scene (built-in name with options, .json or .obj) at its first camera") \
+  X(Camera, "camera", Text, "NAME", "a named camera of the scene (or a bookmark)")                       \
+  X(Technique, "technique", Technique, "NAME", "technique A")                                           \
+  X(TechniqueB, "technique-b", Technique, "NAME", "technique B")                                        \
+  X(Set, "set", Assignment, "TECH.KEY=VALUE", "a parameter of A or B (the prefix says which)")          \
+  X(Swap, "swap", None, "", "swap techniques A and B, with their parameters")                            \
+  X(Compare, "compare", Compare, "off|split|diff", "A alone, A | B with a divider, or |A - B| as a heat map") \
+  X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \
+  X(View, "view", View, "NAME", "a display view (final, reflection, ..., traceable)")                  \
+  X(Exposure, "exposure", Number, "STOPS", "display exposure")                                          \
+  X(Ambient, "ambient", NonNegative, "X", "the scene's ambient factor (the lighting panel's path)")     \
+  X(Frames, "frames", Count, "N", "run N frames of the main loop")                                       \
+  X(Screenshot, "screenshot", Png, "PATH.png", "the image of the last frame, without the UI")           \
+  X(PresetSave, "preset-save", Text, "PATH", "save the session as a JSON preset (see preset.h)")         \
+  X(PresetLoad, "preset-load", Text, "PATH", "load a JSON preset")                                      \
+  X(Resize, "resize", Size, "WxH", "the image size (the window adds the side panel and the status bar)") \
+  X(Minimise, "minimise", None, "", "iconify the window")                                               \
+  X(Restore, "restore", None, "", "restore the window")                                                 \
+  X(Panel, "panel", OnOff, "on|off", "show or hide the side panel (F2)")                                \
+  X(Reload, "reload", None, "", "reload the shaders (F5)")                                               \
+  X(Path, "path", Text, "NAME|free", "follow the scene's camera path NAME (free: the orbit camera)")     \
+  X(Time, "time", NonNegative, "SECONDS", "jump to a scene time (object motion and the path's camera)")  \
+  X(Play, "play", None, "", "start playback (speed/30 s a drawn frame)")                                \
+  X(Pause, "pause", None, "", "stop playback")                                                          \
+  X(Truth, "truth", TruthPolicy, "now|rest|live|manual",                                                \
+    "the on-demand side (the reference): compute now, once the camera rests, every changed frame, or only when asked") \
+  X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays)") \
+  X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line") \
+  X(Magnifier, "magnifier", Zoom, "off|2..16", "the magnifier at the cursor (nearest filtering) at this zoom, or off") \
+  X(Status, "status", None, "", "print the status bar's message, device, frame time and truth state as one JSON line")
+
+namespace ssr {
+
+// The form of a command's arguments (each checked before a script runs).
+enum class ArgForm { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png, OnOff, TruthPolicy, Pixel, Zoom };
+
+enum class Verb {
+#define SSRLAB_X(id, verb, form, args, help) id,
+  SSRLAB_VIEWER_COMMANDS(SSRLAB_X)
+#undef SSRLAB_X
+};
+
+struct CommandInfo {
+  Verb verb;
+  const char* name;   // as scripts write it
+  ArgForm form;
+  const char* args;   // for the help: "NAME", "WxH", ...
+  const char* help;   // one line
+};
+
+inline constexpr CommandInfo kCommands[] = {
+#define SSRLAB_X(id, verb, form, args, help) {Verb::id, verb, ArgForm::form, args, help},
+    SSRLAB_VIEWER_COMMANDS(SSRLAB_X)
+#undef SSRLAB_X
+};
+inline constexpr std::size_t kCommandCount = std::size(kCommands);
+
+const CommandInfo& command_info(Verb verb);
+
+struct ScriptCommand {
+  int line = 0;                   // 1-based, for messages; 0 = not from a script (keys, UI)
+  Verb verb = Verb::Frames;
+  std::vector<std::string> args;  // already checked for count and form (a pixel's "X Y" is one)
+};
+
+// Parses and checks a script; `where` names it in messages ("script.txt").
+std::vector<ScriptCommand> parse_viewer_script(const std::string& text, const std::string& where);
+std::vector<ScriptCommand> load_viewer_script(const std::filesystem::path& path);
+
+// "file:line: " prefix for an error raised while running `c`.
+std::string script_where(const std::string& file, const ScriptCommand& c);
+
+// The command list as the README's Markdown table (ssrlab-view --help-script).
+std::string commands_markdown();
+
+}  // namespace ssr

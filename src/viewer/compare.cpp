@@ -1,0 +1,245 @@
+// Running the two sides on the same frame inputs, composing what the image area shows (A alone,
+// A | B, or |A - B|), the A-vs-B figure (the shared metric code over compare's pixels), and the
+// truth's state: an on-demand side whose image belongs to another frame is stale, and no figure
+// computed from it is shown.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gl/gl.h"
+#include <GLFW/glfw3.h>
+
+#include "core/errors.h"
+#include "eval/grid.h"
+#include "eval/metrics.h"
+#include "eval/runner.h"
+#include "gl/readback.h"
+#include "reference/reference.h"
+#include "registry/registry.h"
+#include "shared/bindings.h"
+#include "viewer/viewer.h"
+
+namespace ssr {
+
+namespace {
+
+// What a technique's image depends on besides the frame inputs: its name and parameter values.
+std::string technique_key(Technique& t) {
+  std::string k = t.name();
+  ParamSet p = t.params();
+  for (std::size_t i = 0; i < p.size(); ++i) k += "," + p.to_string(i);
+  return k;
+}
+
+bool is_frame_pass(const std::string& name) {
+  return name == "gbuffer" || name == "lighting" || name == "composite" || name == "display";
+}
+
+}  // namespace
+
+FrameRequest Viewer::current_frame() const {
+  return FrameRequest(camera_.camera(), FrameTime{frame_index_, time_, cut_});
+}
+
+std::string Viewer::frame_key() const {
+  const Camera& c = camera_.camera();
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d|%g",
+                static_cast<unsigned long long>(renderer_->scene_id()), lighting_revision_, c.position.x,
+                c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view_,
+                renderer_->settings.exposure, image_w_, image_h_, time_);
+  return buf;
+}
+
+// Techniques too slow to run every frame (CPU ray tracing) run when asked: the registry's flag.
+bool Viewer::on_demand(int i) const { return technique_info(sides_[i].technique->name()).on_demand; }
+
+bool Viewer::side_current(int i) const {
+  const Side& s = sides_[i];
+  return s.valid && s.shown_key == frame_key() + "|" + technique_key(*s.technique);
+}
+
+std::string Viewer::truth_state() const {
+  const int n = compare_ == CompareOff ? 1 : 2;
+  std::string state = "none";
+  for (int i = 0; i < n; ++i) {
+    if (!on_demand(i)) continue;
+    if (sides_[i].request > 0) return "computing";
+    state = side_current(i) ? "current" : "stale";
+  }
+  return state;
+}
+
+bool Viewer::figure_shown() const {
+  return compare_ != CompareOff && view_ == VIEW_FINAL && psnr_valid_ && side_current(0) && side_current(1);
+}
+
+nlohmann::json Viewer::inspect(int x, int y) const {
+  if (x < 0 || y < 0 || x >= image_w_ || y >= image_h_ || !composed_)
+    throw InputError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                     std::to_string(image_w_) + "x" + std::to_string(image_h_) + " image.");
+  const int n = compare_ == CompareOff ? 1 : 2;
+  SideImages images[2];
+  std::optional<int> truth;
+  const std::vector<PixelClass>* classes = nullptr;
+  for (int i = 0; i < n; ++i) {
+    const Side& s = sides_[i];
+    const std::vector<ViewMode> d = s.technique->declare().debug_views;
+    images[i] = {s.technique->name(), &s.color, &s.copy, s.has_debug ? &s.debug : nullptr,
+                 std::find(d.begin(), d.end(), ViewMode::Offsets) != d.end()};
+    if (on_demand(i) && side_current(i)) {
+      truth = i;
+      classes = reference_outputs(*s.technique).classes;
+    }
+  }
+  if (!classes && mask_ref_ && mask_key_ == frame_key()) classes = reference_outputs(*mask_ref_).classes;
+  nlohmann::json j = inspect_pixel(*renderer_, x, y, images, n, classes, truth);
+  for (int i = 0; i < n; ++i) j[i == 0 ? "a" : "b"]["current"] = side_current(i);
+  return j;
+}
+
+// Runs the reference of the mask on demand (or in scripted runs) and turns its classes into an image.
+void Viewer::update_traceable_mask() {
+  const std::string key = frame_key();
+  if (mask_key_ == key || !(mask_request_ || scripted_)) return;
+  mask_request_ = false;
+  if (!mask_ref_) {
+    mask_ref_ = create_technique("reference");
+    mask_ref_->load(renderer_->shaders());
+    set_reference_progress(*mask_ref_, [this](double f) { draw_progress("traceable mask", f); });
+  }
+  renderer_->render(current_frame(), *mask_ref_, ViewMode::Final, nullptr);
+  const ReferenceOutputs out = reference_outputs(*mask_ref_);
+  RgbaImage8 im = class_map(*out.classes, image_w_, image_h_);
+  gl::flip_rows(im.pixels, image_w_, image_h_, 4);  // texture rows go bottom-up
+  mask_tex_ = gl::Texture2D("viewer traceable mask", GL_RGBA8, image_w_, image_h_);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, image_w_, image_h_, GL_RGBA, GL_UNSIGNED_BYTE, im.pixels.data());
+  mask_key_ = key;
+}
+
+void Viewer::render() {
+  const int w = image_w_, h = image_h_;
+  renderer_->resize(w, h);
+  ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
+  advance_time();
+  cut_ = cut_next_;
+  cut_next_ = false;
+  if (!view_offered(view_)) view_ = VIEW_FINAL;  // the technique changed: its debug view is gone
+  if (!composed_ || composed_.width() != w || composed_.height() != h) {
+    composed_ = gl::Texture2D("viewer composed", GL_RGBA8, w, h);
+    glTextureParameteri(composed_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // the magnifier shows pixels
+    glTextureParameteri(composed_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    for (Side& s : sides_) {
+      s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, w, h);
+      s.color = gl::Texture2D("viewer side colour", GL_RGBA16F, w, h);
+      s.debug = gl::Texture2D("viewer side debug", GL_RGBA16F, w, h);
+      const std::uint8_t black[4] = {0, 0, 0, 255};
+      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
+      s.valid = false;
+      s.shown_key.clear();
+    }
+    psnr_valid_ = false;
+    psnr_key_.clear();
+  }
+  if (view_ == kViewTraceable) {
+    update_traceable_mask();
+    if (mask_tex_.width() == w && mask_tex_.height() == h)
+      glCopyImageSubData(mask_tex_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    return;
+  }
+  const std::string fkey = frame_key();
+  const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
+  const int n_sides = compare_ == CompareOff ? 1 : 2;
+  for (int i = 0; i < n_sides; ++i) {
+    Side& s = sides_[i];
+    const std::string key = fkey + "|" + technique_key(*s.technique);
+    // On-demand techniques run when asked, once the camera rests (auto), on every changed frame
+    // (live, and in scripted runs). One frame says "computing" first.
+    if (on_demand(i) && s.request == 0 && s.shown_key != key && truth_policy_ == TruthPolicy::Rest && rested)
+      s.request = 2;
+    if (s.request == 2) {
+      s.request = 1;
+      continue;
+    }
+    const bool run_it = !on_demand(i) || s.request == 1 || (truth_policy_ == TruthPolicy::Live && s.shown_key != key);
+    if (!run_it) continue;
+    s.request = 0;
+    // The telemetry views show an instrumented build's counts (its timings then include them).
+    const bool telemetry = view_ < static_cast<int>(view_table().size()) &&
+                           view_table()[static_cast<std::size_t>(view_)].telemetry;
+    if (telemetry != s.instrumented) {
+      s.technique->load(telemetry ? renderer_->shaders().with_defines({"SSR_TELEMETRY"}) : renderer_->shaders());
+      s.instrumented = telemetry;
+    }
+    if (telemetry) renderer_->telemetry().begin(w, h);
+    s.timer->begin_frame();
+    // The inputs render once a frame: the second side's render() finds them current.
+    renderer_->render(current_frame(), *s.technique, static_cast<ViewMode>(view_), s.timer.get());
+    s.timer->end_frame();
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
+    glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       w, h, 1);
+    glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       w, h, 1);
+    s.has_debug = !s.technique->declare().debug_views.empty();
+    if (s.has_debug)
+      glCopyImageSubData(renderer_->debug().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.debug.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                         w, h, 1);
+    s.valid = true;
+    s.shown_key = key;
+    if (!s.timer->completed().empty()) {
+      s.last_times = s.timer->completed().back();
+      s.timer->completed().clear();
+      double tech = 0;
+      for (const auto& p : s.last_times)
+        if (!is_frame_pass(p.name)) tech += p.ms;
+      s.history.push_back(static_cast<float>(tech));
+      while (s.history.size() > 120) s.history.pop_front();
+    }
+  }
+  // Compose A | B (split), the heat map (difference), or A alone.
+  if (compare_ == CompareDiff) {
+    glUseProgram(diff_prog_.id());
+    glBindTextureUnit(TEX_DIFF_A, sides_[0].copy.id());
+    glBindTextureUnit(TEX_DIFF_B, sides_[1].copy.id());
+    glBindImageTexture(IMG_DIFF_OUT, composed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glUniform1f(0, diff_scale_);
+    diff_prog_.dispatch_2d(w, h);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glBindTextureUnit(TEX_DIFF_A, 0);
+    glBindTextureUnit(TEX_DIFF_B, 0);
+  } else {
+    glCopyImageSubData(sides_[0].copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    const int x0 = std::clamp(static_cast<int>(std::lround(split_ * static_cast<float>(w))), 0, w);
+    if (compare_ == CompareSplit && x0 < w)
+      glCopyImageSubData(sides_[1].copy.id(), GL_TEXTURE_2D, 0, x0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, x0, 0, 0,
+                         w - x0, h, 1);
+  }
+  // PSNR of A vs B, on the CPU, whenever either image changed, from the current frame only.
+  if (compare_ != CompareOff && side_current(0) && side_current(1)) {
+    const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key;
+    if (key != psnr_key_) {
+      // The shared metric code over compare's pixels: the final image's display values on the
+      // reflective pixels of this frame's G-buffer (both sides ran on it: the key holds the frame).
+      std::optional<double> p;
+      if (view_ == VIEW_FINAL) {
+        const float exposure = renderer_->settings.exposure;
+        p = psnr_where(display_values(renderer_->read_texture(sides_[0].color), exposure),
+                       display_values(renderer_->read_texture(sides_[1].color), exposure), reflective_pixels(*renderer_));
+      }
+      psnr_valid_ = p.has_value();
+      psnr_ = p.value_or(0.0);
+      psnr_key_ = key;
+      if (p && std::isfinite(*p)) {
+        psnr_history_.push_back(static_cast<float>(std::min(*p, kPsnrCap)));
+        while (psnr_history_.size() > 300) psnr_history_.pop_front();
+      }
+    }
+  } else {
+    psnr_valid_ = false;
+    psnr_key_.clear();
+  }
+}
+
+}  // namespace ssr

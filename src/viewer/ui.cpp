@@ -1,0 +1,752 @@
+// What the user sees and touches: the layout (the image at the top left, never under a panel;
+// the side panel on the right, resizable and hidden with F2; the status bar along the bottom),
+// the panels, the legend of the shown view, the keys and the mouse.
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstdint>
+#include <ctime>
+#include <filesystem>
+#include <map>
+
+#include "gl/gl.h"
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "eval/metrics.h"
+#include "registry/presets.h"
+#include "registry/registry.h"
+#include "scene/animation.h"
+#include "scene/builtin_scenes.h"
+#include "shared/colormap.h"
+#include "viewer/panels.h"
+#include "viewer/viewer.h"
+
+namespace fs = std::filesystem;
+
+namespace ssr {
+
+namespace {
+
+// The keys, declared once: the F1 window lists them, handle_input acts on them.
+struct KeyBinding {
+  int key;
+  const char* name;
+  const char* help;
+};
+constexpr KeyBinding kKeys[] = {
+    {GLFW_KEY_F1, "F1", "show or hide this list"},
+    {GLFW_KEY_F2, "F2", "show or hide the side panel (command: panel)"},
+    {GLFW_KEY_F5, "F5", "reload the shaders (command: reload)"},
+    {GLFW_KEY_F12, "F12", "save the image as ssrlab-DATE-TIME.png (command: screenshot)"},
+    {GLFW_KEY_I, "I", "pin the inspector to the pixel under the cursor (again: follow the cursor)"},
+    {GLFW_KEY_M, "M", "magnifier at the cursor on / off (zoom in the view panel; command: magnifier)"},
+    {GLFW_KEY_W, "W / S", "fly forward / back (Shift x4, Ctrl x0.25)"},
+    {GLFW_KEY_A, "A / D", "fly left / right"},
+    {GLFW_KEY_E, "E / Q", "fly up / down"},
+};
+constexpr const char* kMouse[][2] = {
+    {"left drag", "orbit around the target (on the divider: move it)"},
+    {"right drag", "pan"},
+    {"wheel", "zoom towards the target"},
+    {"panel edge", "drag to resize the side panel"},
+};
+
+std::string timestamped_name() {
+  char buf[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(buf, sizeof buf, "ssrlab-%Y%m%d-%H%M%S.png", std::localtime(&t));
+  return buf;
+}
+
+bool combo(const char* label, int* current, const std::vector<std::string>& items) {
+  return ImGui::Combo(label, current, [](void* data, int i, const char** out) {
+    *out = static_cast<const std::vector<std::string>*>(data)->at(static_cast<std::size_t>(i)).c_str();
+    return true;
+  }, const_cast<std::vector<std::string>*>(&items), static_cast<int>(items.size()));
+}
+
+ImU32 colour(float r, float g, float b, float a = 1.0f) { return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a)); }
+
+// Room for the longest parameter name of any technique next to its widget.
+float label_width() {
+  static const float w = [] {
+    float m = ImGui::CalcTextSize("exposure (stops)").x;
+    for (const TechniqueInfo& t : technique_registry()) {
+      auto tech = t.create();
+      ParamSet p = tech->params();
+      for (std::size_t i = 0; i < p.size(); ++i) m = std::max(m, ImGui::CalcTextSize(p.table()[i].name).x);
+    }
+    return m;
+  }();
+  return w + ImGui::GetStyle().ItemInnerSpacing.x + 4.0f;
+}
+
+constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar;
+
+}  // namespace
+
+// --- input ---------------------------------------------------------------------------------
+
+void Viewer::handle_input(double dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  for (const int key : window_->take_presses()) {
+    if (io.WantCaptureKeyboard) continue;  // typing into a field
+    if (key == GLFW_KEY_F1) help_shown_ = !help_shown_;
+    else if (key == GLFW_KEY_F2) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
+    else if (key == GLFW_KEY_F5) ui_command(Verb::Reload);
+    else if (key == GLFW_KEY_F12) ui_command(Verb::Screenshot, timestamped_name());
+    else if (key == GLFW_KEY_I) pinned_ = pinned_ ? std::nullopt : hovered_;
+    else if (key == GLFW_KEY_M) ui_command(Verb::Magnifier, magnifier_ ? "off" : "8");
+  }
+  CameraInput in;
+  in.dt = dt;
+  if (!io.WantCaptureKeyboard) {
+    auto held = [&](int key) { return window_->held_or_tapped(key) ? 1.0f : 0.0f; };
+    in.fly = {held(GLFW_KEY_D) - held(GLFW_KEY_A), held(GLFW_KEY_E) - held(GLFW_KEY_Q), held(GLFW_KEY_W) - held(GLFW_KEY_S)};
+    in.speed = (io.KeyShift ? 4.0f : 1.0f) * (io.KeyCtrl ? 0.25f : 1.0f);
+  }
+  glm::dvec2 mouse;
+  glfwGetCursorPos(window_->handle(), &mouse.x, &mouse.y);
+  const glm::vec2 delta = glm::vec2(mouse - last_mouse_);
+  last_mouse_ = mouse;
+  const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  const float image_w = static_cast<float>(image_w_) / sx, image_h = io.DisplaySize.y - kStatusH;
+  const bool over_image = mouse.x >= 0 && mouse.x < image_w && mouse.y >= 0 && mouse.y < image_h;
+  const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+  hovered_ = over_image && !io.WantCaptureMouse
+                 ? std::optional(glm::ivec2(std::min(static_cast<int>(mouse.x * sx), image_w_ - 1),
+                                            std::min(static_cast<int>(mouse.y * sy), image_h_ - 1)))
+                 : std::nullopt;
+  // The panel's edge: drag it to resize the panel.
+  const bool near_edge = panel_shown_ && std::abs(static_cast<float>(mouse.x) - image_w) < 5.0f && mouse.y < image_h;
+  if (near_edge && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) resizing_panel_ = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) resizing_panel_ = false;
+  if (resizing_panel_) panel_w_ = io.DisplaySize.x - static_cast<float>(mouse.x);
+  // The split divider (image coordinates: the image starts at the window's left edge).
+  const float divider_x = split_ * image_w;
+  const bool near_divider = compare_ == CompareSplit && over_image && std::abs(static_cast<float>(mouse.x) - divider_x) < 6.0f;
+  if (!io.WantCaptureMouse && near_divider && !resizing_panel_ && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    dragging_divider_ = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging_divider_ = false;
+  if (dragging_divider_ && image_w > 0) split_ = std::clamp(static_cast<float>(mouse.x) / image_w, 0.0f, 1.0f);
+  if (near_edge || resizing_panel_ || ((near_divider && !io.WantCaptureMouse) || dragging_divider_))
+    ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  const bool mouse_free = !io.WantCaptureMouse && !dragging_divider_ && !resizing_panel_ && !near_edge;
+  if (mouse_free && over_image) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) in.orbit = delta;
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) in.pan = delta;
+    in.wheel = io.MouseWheel;
+  }
+  if (camera_.update(in)) last_moved_ = glfwGetTime();
+}
+
+// --- layout --------------------------------------------------------------------------------
+
+void Viewer::layout() {
+  const ImGuiIO& io = ImGui::GetIO();
+  window_->framebuffer_size(&fb_w_, &fb_h_);
+  const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+  panel_w_ = std::clamp(panel_w_, 200.0f, std::max(200.0f, io.DisplaySize.x - 64.0f));
+  image_w_ = std::max(0, fb_w_ - (panel_shown_ ? static_cast<int>(std::lround(panel_w_ * sx)) : 0));
+  image_h_ = std::max(0, fb_h_ - static_cast<int>(std::lround(kStatusH * sy)));
+}
+
+void Viewer::draw_ui(double dt) {
+  draw_image_overlays();
+  if (panel_shown_) side_panel(dt);
+  status_bar(dt);
+  if (help_shown_) help_window();
+}
+
+// On the image: the divider and the A / B labels, and what is not current ("computing", "stale").
+// Never in screenshots (they read the composed image, not the window).
+void Viewer::draw_image_overlays() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  const float w = static_cast<float>(image_w_) / sx, h = io.DisplaySize.y - kStatusH;
+  if (w <= 0 || h <= 0) return;
+  ImDrawList* bg = ImGui::GetBackgroundDrawList();
+  bg->PushClipRect(ImVec2(0, 0), ImVec2(w, h));
+  const float x = compare_ == CompareSplit ? split_ * w : 0.0f;
+  if (compare_ == CompareSplit) {
+    bg->AddLine(ImVec2(x, 0), ImVec2(x, h), dragging_divider_ ? colour(1, 0.86f, 0.31f) : colour(1, 1, 1, 0.8f), 2.0f);
+    const std::string left = "A: " + sides_[0].technique->name(), right = "B: " + sides_[1].technique->name();
+    bg->AddText(ImVec2(x - 8 - ImGui::CalcTextSize(left.c_str()).x, h - 22), colour(1, 1, 1, 0.9f), left.c_str());
+    bg->AddText(ImVec2(x + 8, h - 22), colour(1, 1, 1, 0.9f), right.c_str());
+  }
+  // A side that is not current says so on its part of the image.
+  const int n = compare_ == CompareOff ? 1 : 2;
+  for (int i = 0; i < n && view_ != kViewTraceable; ++i) {
+    if (side_current(i)) continue;
+    const Side& s = sides_[i];
+    std::string what;
+    if (s.request > 0) what = "computing " + s.technique->name() + " ...";
+    else if (!on_demand(i)) continue;  // every-frame sides are current after this frame
+    else if (!s.valid) what = s.technique->name() + ": not computed yet (press 'truth' or rest the camera)";
+    else what = s.technique->name() + " is STALE: it shows an earlier view" +
+                (truth_policy_ == TruthPolicy::Rest ? " (recomputed once the camera rests)" : " (press 'compute now')");
+    const float x0 = compare_ == CompareSplit ? (i == 0 ? 0.0f : x) : 0.0f;
+    const float y0 = compare_ == CompareDiff ? 8.0f + 26.0f * static_cast<float>(i) : 8.0f;
+    const ImVec2 size = ImGui::CalcTextSize(what.c_str());
+    bg->AddRectFilled(ImVec2(x0 + 8, y0), ImVec2(x0 + 16 + size.x, y0 + size.y + 8), colour(0.55f, 0.1f, 0.05f, 0.85f), 3.0f);
+    bg->AddText(ImVec2(x0 + 12, y0 + 4), colour(1, 0.9f, 0.8f), what.c_str());
+  }
+  if (magnifier_ > 0 && hovered_ && composed_) draw_magnifier();
+  bg->PopClipRect();
+}
+
+// A box near the cursor showing the image around it at magnifier_ x, nearest filtering (the
+// composed image's own filter), with the centre pixel outlined.
+void Viewer::draw_magnifier() {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+  const float w = static_cast<float>(image_w_) / sx, h = io.DisplaySize.y - kStatusH;
+  const float box = std::min({176.0f, w, h});
+  const float zoom = static_cast<float>(magnifier_);
+  const ImVec2 m = io.MousePos;
+  ImVec2 p0(m.x + 24, m.y + 24);
+  if (p0.x + box > w) p0.x = m.x - 24 - box;
+  if (p0.y + box > h) p0.y = m.y - 24 - box;
+  p0 = ImVec2(std::max(p0.x, 0.0f), std::max(p0.y, 0.0f));
+  const float half = box / zoom * 0.5f;  // image pixels either side of the centre
+  const float cx = static_cast<float>(hovered_->x) + 0.5f, cy = static_cast<float>(hovered_->y) + 0.5f;
+  const float iw = static_cast<float>(image_w_), ih = static_cast<float>(image_h_);
+  // The texture's rows go up: v = 1 is the image's top row.
+  const ImVec2 uv0((cx - half) / iw, 1.0f - (cy - half) / ih), uv1((cx + half) / iw, 1.0f - (cy + half) / ih);
+  ImDrawList* bg = ImGui::GetBackgroundDrawList();
+  bg->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(composed_.id())), p0, ImVec2(p0.x + box, p0.y + box),
+               uv0, uv1);
+  bg->AddRect(p0, ImVec2(p0.x + box, p0.y + box), colour(1, 1, 1, 0.9f));
+  const ImVec2 c(p0.x + box * 0.5f, p0.y + box * 0.5f);
+  bg->AddRect(ImVec2(c.x - zoom * 0.5f, c.y - zoom * 0.5f), ImVec2(c.x + zoom * 0.5f, c.y + zoom * 0.5f), colour(1, 0.2f, 0.9f));
+  char label[32];
+  std::snprintf(label, sizeof label, "%dx", magnifier_);
+  bg->AddText(ImVec2(p0.x + 4, p0.y + 2), colour(1, 1, 1), label);
+}
+
+// The values of the pinned pixel, or of the one under the cursor.
+void Viewer::inspector_panel() {
+  const std::optional<glm::ivec2> p = pinned_ ? pinned_ : hovered_;
+  if (!p || !composed_ || p->x >= image_w_ || p->y >= image_h_) {
+    ImGui::TextDisabled("hover the image (I pins a pixel)");
+    return;
+  }
+  nlohmann::json j;
+  try {
+    j = inspect(p->x, p->y);
+  } catch (const std::exception& e) {
+    ImGui::TextDisabled("%s", e.what());
+    return;
+  }
+  ImGui::Text("pixel %d, %d%s", p->x, p->y, pinned_ ? " (pinned: I to follow the cursor)" : "");
+  auto line = [](const std::string& k, const nlohmann::json& v) {
+    std::string s = v.is_number_float() ? "" : v.dump();
+    if (v.is_number_float()) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
+      s = buf;
+    } else if (v.is_array()) {
+      s.clear();
+      for (const auto& e : v) {
+        char buf[32];
+        if (e.is_number_float()) std::snprintf(buf, sizeof buf, "%.4g", e.get<double>());
+        else std::snprintf(buf, sizeof buf, "%s", e.dump().c_str());
+        s += (s.empty() ? "" : "  ") + std::string(buf);
+      }
+    }
+    ImGui::TextDisabled("%s", k.c_str());
+    ImGui::SameLine(110);
+    ImGui::TextUnformatted(s.c_str());
+  };
+  for (const auto& [k, v] : j.items())
+    if (!v.is_object() && k != "pixel") line(k, v);
+  for (const char* side : {"a", "b"}) {
+    if (!j.contains(side)) continue;
+    ImGui::Separator();
+    ImGui::Text("%s: %s%s", side[0] == 'a' ? "A" : "B", j[side]["technique"].get<std::string>().c_str(),
+                j[side]["current"].get<bool>() ? "" : " (stale)");
+    for (const auto& [k, v] : j[side].items())
+      if (k != "technique" && k != "current") line(k, v);
+  }
+}
+
+// The status bar: panel and keys toggles, the latest message (errors red), the truth's state,
+// the device and the frame time.
+void Viewer::status_bar(double dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - kStatusH));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, kStatusH));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+  ImGui::Begin("##status", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
+  if (ImGui::SmallButton(panel_shown_ ? "panel >" : "< panel")) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("show or hide the side panel (F2)");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("keys")) help_shown_ = !help_shown_;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys and mouse (F1)");
+  char right[256];
+  const std::string truth = truth_state() == "none" ? "" : "truth: " + truth_state() + "  |  ";
+  std::snprintf(right, sizeof right, "%sframe %.1f ms (%s)  |  %s", truth.c_str(), dt * 1000.0,
+                clock_ == gl::PassTimer::Clock::Gpu ? "gpu timers" : "cpu clock", window_->info().renderer.c_str());
+  const float right_w = ImGui::CalcTextSize(right).x;
+  ImGui::SameLine();
+  const float msg_w = ImGui::GetContentRegionAvail().x - right_w - 12.0f;
+  if (msg_w > 20 && !status_.empty()) {
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImGui::PushClipRect(p, ImVec2(p.x + msg_w, p.y + ImGui::GetTextLineHeight()), true);
+    ImGui::TextColored(status_error_ ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.8f, 0.9f, 0.8f, 1), "%s", status_.c_str());
+    ImGui::PopClipRect();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", status_.c_str());
+    ImGui::SameLine();
+  }
+  ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), io.DisplaySize.x - right_w - 8.0f));
+  ImGui::TextDisabled("%s", right);
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+}
+
+void Viewer::help_window() {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("keys and mouse (F1)", &help_shown_, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  if (ImGui::BeginTable("keys", 2)) {
+    for (const KeyBinding& k : kKeys) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.name);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(k.help);
+    }
+    for (const auto& m : kMouse) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(m[0]);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(m[1]);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Scripts (--script FILE) take the commands of `ssrlab-view --help-script`.");
+  ImGui::End();
+}
+
+// The legend of what the image shows: a colour bar with its scale and unit, swatches, or how
+// the colour encodes a vector; the difference view's heat scale.
+void Viewer::legend() {
+  const float bar_w = std::max(ImGui::GetContentRegionAvail().x - 8.0f, 60.0f), bar_h = 12.0f;
+  auto colour_bar = [&](auto&& map) {
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const int n = 64;
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 c = map((static_cast<float>(i) + 0.5f) / n);
+      dl->AddRectFilled(ImVec2(p.x + bar_w * static_cast<float>(i) / n, p.y),
+                        ImVec2(p.x + bar_w * static_cast<float>(i + 1) / n + 1, p.y + bar_h), colour(c.x, c.y, c.z));
+    }
+    ImGui::Dummy(ImVec2(bar_w, bar_h));
+  };
+  auto scale = [&](float lo, float hi, const char* unit, bool clamps) {
+    ImGui::Text("%.3g", lo);
+    char right[96];
+    std::snprintf(right, sizeof right, "%.3g%s %s", hi, clamps ? "+" : "", unit);
+    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), bar_w - ImGui::CalcTextSize(right).x + ImGui::GetStyle().WindowPadding.x));
+    ImGui::TextUnformatted(right);
+  };
+  if (compare_ == CompareDiff && view_ != kViewTraceable) {
+    ImGui::TextUnformatted("difference |A - B| (display values, mean of RGB)");
+    colour_bar([](float t) { return shared::heat(t); });
+    scale(0.0f, diff_scale_, "of full white", true);
+    return;
+  }
+  if (view_ == kViewTraceable) {
+    ImGui::TextUnformatted("the reference's classes of each reflective pixel");
+    const struct { const char* name; ImU32 c; } classes[] = {
+        {"traceable", IM_COL32(40, 190, 80, 255)}, {"missing", IM_COL32(220, 50, 40, 255)}, {"sky", IM_COL32(60, 110, 230, 255)}};
+    for (const auto& k : classes) {
+      ImGui::ColorButton(k.name, ImGui::ColorConvertU32ToFloat4(k.c), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+      ImGui::SameLine();
+      ImGui::TextUnformatted(k.name);
+      ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    return;
+  }
+  const ViewInfo& v = view_table()[static_cast<std::size_t>(view_)];
+  const Legend& l = v.legend;
+  ImGui::TextWrapped("%s: %s", v.name, v.description);
+  switch (l.kind) {
+    case Legend::Radiance:
+      ImGui::TextDisabled("tone mapped (ACES, sRGB) at %+.2f stops", renderer_->settings.exposure);
+      break;
+    case Legend::Grey:
+      colour_bar([](float t) { return glm::vec3(t); });
+      scale(0.0f, l.full, l.unit, false);
+      break;
+    case Legend::Heat:
+      colour_bar([](float t) { return shared::heat(t); });
+      scale(0.0f, l.full, l.unit, true);
+      break;
+    case Legend::Swatches:
+      for (const Legend::Swatch& s : l.swatches) {
+        ImGui::ColorButton(s.name, ImVec4(s.r, s.g, s.b, 1), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+        ImGui::SameLine();
+        ImGui::TextUnformatted(s.name);
+        if (ImGui::GetContentRegionAvail().x > 150) ImGui::SameLine();
+      }
+      ImGui::NewLine();
+      break;
+    case Legend::Encoded:
+      break;  // the description says how
+  }
+}
+
+// --- the side panel ------------------------------------------------------------------------
+
+void Viewer::side_panel(double dt) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - panel_w_, 0));
+  ImGui::SetNextWindowSize(ImVec2(panel_w_, io.DisplaySize.y - kStatusH));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+  ImGui::Begin("##panel", nullptr, kFixed);
+  ImGui::PopStyleVar();
+  ImGui::PushItemWidth(-label_width());
+  // Pinned at the top: what the image shows and the figure read from it.
+  legend();
+  if (compare_ != CompareOff) {
+    if (figure_shown()) {
+      if (psnr_ >= kPsnrCap) ImGui::Text("PSNR A vs B: identical");
+      else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("final image, reflective pixels, display values: compare's 'PSNR' when B is the reference");
+    } else if (truth_state() == "stale" || truth_state() == "computing") {
+      ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "PSNR A vs B: - (%s is %s)", sides_[1].technique->name().c_str(),
+                         truth_state().c_str());
+    } else if (view_ != VIEW_FINAL) {
+      ImGui::TextDisabled("PSNR A vs B: in the final view only");
+    } else {
+      ImGui::TextDisabled("PSNR A vs B: - (no reflective pixels)");
+    }
+  }
+  ImGui::Separator();
+  ImGui::BeginChild("##sections");
+  ImGui::PushItemWidth(-label_width());
+  if (ImGui::CollapsingHeader("pixel inspector")) inspector_panel();
+  if (ImGui::CollapsingHeader("scene and camera", ImGuiTreeNodeFlags_DefaultOpen)) scene_panel();
+  if (ImGui::CollapsingHeader("lights and environment")) {
+    std::vector<Light> lights = lights_;
+    Environment env = environment_;
+    float ambient = ambient_;
+    if (draw_lights_panel(lights) | draw_environment_panel(env, ambient)) {
+      try {
+        set_lighting(lights, env, ambient);
+      } catch (const std::exception& e) {
+        set_status(e.what(), true);
+      }
+    }
+  }
+  if (ImGui::CollapsingHeader("time and camera paths")) time_panel();
+  if (ImGui::CollapsingHeader("view and compare", ImGuiTreeNodeFlags_DefaultOpen)) view_panel();
+  if (ImGui::CollapsingHeader("technique A", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(0);
+  if (compare_ != CompareOff && ImGui::CollapsingHeader("technique B", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(1);
+  if (ImGui::CollapsingHeader("presets")) {
+    ImGui::InputText("file", preset_path_, sizeof preset_path_);
+    if (ImGui::Button("save")) ui_command(Verb::PresetSave, preset_path_);
+    ImGui::SameLine();
+    if (ImGui::Button("load")) ui_command(Verb::PresetLoad, preset_path_);
+    // The preset files next to the named one.
+    std::vector<std::string> files;
+    std::error_code ec;
+    const fs::path dir = fs::path(preset_path_).parent_path().empty() ? fs::path(".") : fs::path(preset_path_).parent_path();
+    for (const auto& e : fs::directory_iterator(dir, ec))
+      if (e.path().extension() == ".json") files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    if (!files.empty() && ImGui::BeginCombo("files here", "load a preset file ...")) {
+      for (const std::string& f : files)
+        if (ImGui::Selectable(f.c_str())) {
+          std::snprintf(preset_path_, sizeof preset_path_, "%s", f.c_str());
+          ui_command(Verb::PresetLoad, f);
+        }
+      ImGui::EndCombo();
+    }
+    ImGui::TextDisabled("techniques, parameters, view, camera, lights (JSON)");
+  }
+  if (ImGui::CollapsingHeader("timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_panel(dt);
+  ImGui::PopItemWidth();
+  ImGui::EndChild();
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void Viewer::scene_panel() {
+  int current = static_cast<int>(std::find(scene_names_.begin(), scene_names_.end(), scene_spec_) - scene_names_.begin());
+  if (current >= static_cast<int>(scene_names_.size())) current = -1;
+  if (combo("scene", &current, scene_names_) && current >= 0) ui_command(Verb::Scene, scene_names_[static_cast<std::size_t>(current)]);
+  // Built-in scenes' options, one combo each: the spec becomes "name:key=value,..." as --scene takes it.
+  const std::string base = scene_spec_.substr(0, scene_spec_.find(':'));
+  for (const BuiltinSceneInfo& s : builtin_scenes()) {
+    if (s.name != base) continue;
+    std::map<std::string, std::string> chosen;  // the current spec's options
+    if (const auto colon = scene_spec_.find(':'); colon != std::string::npos) {
+      std::string rest = scene_spec_.substr(colon + 1) + ",";
+      for (std::size_t at = 0, comma; (comma = rest.find(',', at)) != std::string::npos; at = comma + 1) {
+        const std::string kv = rest.substr(at, comma - at);
+        if (const auto eq = kv.find('='); eq != std::string::npos) chosen[kv.substr(0, eq)] = kv.substr(eq + 1);
+      }
+    }
+    for (const BuiltinSceneInfo::Option& o : s.options) {
+      if (o.values.empty()) continue;
+      const std::string now = chosen.count(o.key) ? chosen[o.key] : o.default_value.empty() ? "-" : o.default_value;
+      if (!ImGui::BeginCombo(o.key.c_str(), now.c_str())) continue;
+      for (const std::string& v : o.values) {
+        if (!ImGui::Selectable(v.c_str(), v == now)) continue;
+        std::map<std::string, std::string> next = chosen;
+        next[o.key] = v;
+        std::string spec = base;
+        for (const auto& [k, x] : next) spec += (spec == base ? ":" : ",") + k + "=" + x;
+        ui_command(Verb::Scene, spec);
+      }
+      ImGui::EndCombo();
+    }
+  }
+  ImGui::InputTextWithHint("##scenepath", ".json or .obj path", scene_path_, sizeof scene_path_);
+  ImGui::SameLine();
+  if (ImGui::Button("open") && scene_path_[0]) ui_command(Verb::Scene, scene_path_);
+  if (ImGui::BeginCombo("camera", camera_.camera().name.c_str())) {
+    for (const Camera& c : cameras_)
+      if (ImGui::Selectable(c.name.c_str(), c.name == camera_.camera().name)) ui_command(Verb::Camera, c.name);
+    ImGui::EndCombo();
+  }
+  if (ImGui::Button("bookmark this view")) {
+    Camera c = camera_.camera();
+    c.name = "bookmark " + std::to_string(++bookmarks_);
+    cameras_.push_back(c);
+    camera_.camera().name = c.name;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("adds the current view to the camera list (saved with presets)");
+  if (draw_camera_panel(camera_.camera())) last_moved_ = glfwGetTime();
+}
+
+void Viewer::view_panel() {
+  if (ImGui::BeginCombo("view", view_names_[static_cast<std::size_t>(view_)].c_str())) {
+    for (int v = 0; v < static_cast<int>(view_names_.size()); ++v)
+      if (view_offered(v) && ImGui::Selectable(view_names_[static_cast<std::size_t>(v)].c_str(), v == view_))
+        ui_command(Verb::View, view_names_[static_cast<std::size_t>(v)]);
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("only the views the shown techniques produce; the legend at the top says how to read it");
+  if (view_ == kViewTraceable) {
+    if (mask_request_) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "computing...");
+    else if (mask_key_ != frame_key()) {
+      if (ImGui::Button("compute traceable mask")) mask_request_ = true;
+      ImGui::SameLine();
+      ImGui::TextDisabled(mask_key_.empty() ? "not computed" : "stale");
+    } else ImGui::TextDisabled("traceable mask up to date");
+  }
+  ImGui::SliderFloat("exposure (stops)", &renderer_->settings.exposure, -8.0f, 8.0f, "%.2f");
+  bool magnify = magnifier_ > 0;
+  if (ImGui::Checkbox("magnifier (M)", &magnify)) magnifier_ = magnify ? 8 : 0;
+  if (magnify) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - label_width() + 40.0f);
+    ImGui::SliderInt("zoom", &magnifier_, 2, 16, "%dx");
+  }
+  int mode = compare_;
+  ImGui::RadioButton("A only", &mode, CompareOff);
+  ImGui::SameLine();
+  ImGui::RadioButton("split", &mode, CompareSplit);
+  ImGui::SameLine();
+  ImGui::RadioButton("difference", &mode, CompareDiff);
+  if (mode != compare_) ui_command(Verb::Compare, kCompareNames[mode]);
+  if (compare_ == CompareSplit) ImGui::SliderFloat("divider", &split_, 0.0f, 1.0f, "%.3f");
+  if (compare_ == CompareDiff) {
+    ImGui::SliderFloat("full scale", &diff_scale_, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("mean |A - B| over RGB (display values) shown as the hottest colour");
+  }
+  if (compare_ != CompareOff) {
+    if (ImGui::Button("swap A and B")) ui_command(Verb::Swap);
+    ImGui::SameLine();
+    if (ImGui::Button("B is the truth")) {
+      for (const TechniqueInfo& t : technique_registry())
+        if (t.truth && sides_[1].technique->name() != t.name) ui_command(Verb::TechniqueB, t.name);
+    }
+    if (sides_[0].technique->name() == sides_[1].technique->name()) {
+      ImGui::SameLine();
+      if (ImGui::Button("A's values to B")) {
+        try {
+          apply_params(*sides_[1].technique, capture_params(*sides_[0].technique));
+        } catch (const std::exception& e) {
+          set_status(e.what(), true);
+        }
+      }
+    }
+    if (psnr_history_.size() > 1) {
+      const std::vector<float> h(psnr_history_.begin(), psnr_history_.end());
+      ImGui::PlotLines("##psnr history", h.data(), static_cast<int>(h.size()), 0, "PSNR A vs B per frame (dB)", FLT_MAX,
+                       FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
+    }
+  }
+}
+
+// Technique picker + parameter panel of one side (values off their default are highlighted).
+void Viewer::technique_panel(int i) {
+  Side& side = sides_[i];
+  ImGui::PushID(i);
+  if (ImGui::BeginCombo(i == 0 ? "A" : "B", side.technique->name().c_str())) {
+    for (const TechniqueInfo& t : technique_registry()) {
+      if (ImGui::Selectable(t.name.c_str(), t.name == side.technique->name()))
+        ui_command(i == 0 ? Verb::Technique : Verb::TechniqueB, t.name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (on_demand(i)) {
+    ImGui::BeginDisabled(side.request > 0 || side_current(i));
+    if (ImGui::Button("compute now")) ui_command(Verb::Truth, "now");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    const std::string state = side.request > 0 ? "computing" : side_current(i) ? "current" : side.valid ? "stale" : "not computed";
+    if (state == "current") ImGui::TextDisabled("up to date");
+    else ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", state.c_str());
+    int policy = static_cast<int>(truth_policy_);
+    ImGui::RadioButton("when asked", &policy, static_cast<int>(TruthPolicy::Manual));
+    ImGui::SameLine();
+    ImGui::RadioButton("at rest", &policy, static_cast<int>(TruthPolicy::Rest));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("recompute it %.1f s after the view last changed", kRestSeconds);
+    ImGui::SameLine();
+    ImGui::RadioButton("every frame", &policy, static_cast<int>(TruthPolicy::Live));
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("run it on every changed frame (playback: the A-vs-B figure per frame is plotted); slow");
+    if (policy != static_cast<int>(truth_policy_)) truth_policy_ = static_cast<TruthPolicy>(policy);
+  }
+  ParamSet params = side.technique->params();
+  draw_param_panel(params);
+  ImGui::PopID();
+}
+
+void Viewer::time_panel() {
+  const Animation& anim = renderer_->scene().animation;
+  std::vector<std::string> names = {"free camera"};
+  for (const CameraPath& p : anim.paths) names.push_back(p.name);
+  int current = path_ + 1;
+  if (combo("path", &current, names)) ui_command(Verb::Path, current == 0 ? "free" : names[static_cast<std::size_t>(current)]);
+  if (path_ >= 0 && ImGui::IsItemHovered())
+    ImGui::SetTooltip("%s", anim.paths[static_cast<std::size_t>(path_)].description.c_str());
+  if (ImGui::Button(playing_ ? "pause" : "play")) ui_command(playing_ ? Verb::Pause : Verb::Play);
+  ImGui::SameLine();
+  if (ImGui::Button("step")) set_time(time_ + speed_ / 30.0f);
+  ImGui::SameLine();
+  ImGui::Checkbox("loop", &loop_);
+  ImGui::SameLine();
+  if (ImGui::Button("reset history")) cut_next_ = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the next frame is a camera cut: every technique's history restarts");
+  float t = time_;
+  if (ImGui::SliderFloat("time", &t, 0.0f, std::max(anim.duration, 0.01f), "%.2f s")) set_time(t);
+  ImGui::SliderFloat("speed", &speed_, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+  ImGui::TextDisabled("frame %d, %s", frame_index_, renderer_->history_valid() ? "history carried" : "history restarted");
+}
+
+// Per-pass times of the last frame of each side (ms and % of that side's frame), the
+// technique's rolling plot and the frame time. Labelled `gpu` or `cpu` (llvmpipe: CPU clock).
+void Viewer::timing_panel(double dt) {
+  const bool gpu = clock_ == gl::PassTimer::Clock::Gpu;
+  const char* clock_name = gpu ? "gpu" : "cpu";
+  const int n = compare_ != CompareOff ? 2 : 1;
+  std::vector<std::string> passes;
+  std::vector<double> total(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n; ++i)
+    for (const auto& p : sides_[i].last_times) {
+      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
+      total[static_cast<std::size_t>(i)] += p.ms;
+    }
+  if (ImGui::BeginTable("passes", 1 + 2 * n, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
+    for (int i = 0; i < n; ++i) {
+      ImGui::TableSetupColumn(i == 0 ? "A ms" : "B ms");
+      ImGui::TableSetupColumn("%");
+    }
+    ImGui::TableHeadersRow();
+    auto row = [&](const std::string& name, auto&& ms_of) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name.c_str());
+      for (int i = 0; i < n; ++i) {
+        const std::optional<double> ms = ms_of(i);
+        ImGui::TableNextColumn();
+        if (ms) ImGui::Text("%.3f", *ms);
+        ImGui::TableNextColumn();
+        if (ms && total[static_cast<std::size_t>(i)] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[static_cast<std::size_t>(i)]);
+      }
+    };
+    for (const std::string& pass : passes)
+      row(pass, [&](int i) -> std::optional<double> {
+        for (const auto& p : sides_[i].last_times)
+          if (p.name == pass) return p.ms;
+        return std::nullopt;
+      });
+    row("total", [&](int i) -> std::optional<double> { return total[static_cast<std::size_t>(i)]; });
+    ImGui::EndTable();
+  }
+  const float plot_w = ImGui::GetContentRegionAvail().x;  // a positive width: 1.86 draws nothing for -1
+  for (int i = 0; i < n; ++i) {
+    const Side& s = sides_[i];
+    if (s.history.empty()) continue;
+    const std::vector<float> h(s.history.begin(), s.history.end());
+    const float hi = *std::max_element(h.begin(), h.end());
+    char overlay[128];
+    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms %s (max %.3f)", i == 0 ? "A" : "B", s.technique->name().c_str(),
+                  h.back(), clock_name, hi);
+    ImGui::PushID(i);
+    ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1e-3f),
+                     ImVec2(plot_w, 45));
+    ImGui::PopID();
+  }
+  if (!frame_ms_.empty()) {
+    const std::vector<float> f(frame_ms_.begin(), frame_ms_.end());
+    const float hi = *std::max_element(f.begin(), f.end());
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame %.1f ms (wall clock)", dt * 1000.0);
+    ImGui::PlotLines("##frame", f.data(), static_cast<int>(f.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1.0f),
+                     ImVec2(plot_w, 45));
+  }
+  if (!gpu) ImGui::TextDisabled("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
+}
+
+// A frame with only a progress bar over the last image: long CPU work (the reference) calls it.
+void Viewer::draw_progress(const std::string& what, double fraction) {
+  window_->poll();
+  window_->begin_ui();
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(static_cast<float>(image_w_) * 0.5f, static_cast<float>(image_h_) * 0.5f), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(420.0f, io.DisplaySize.x), 0));
+  ImGui::Begin("computing", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Text("%s: CPU ray tracing (Embree)", what.c_str());
+  ImGui::ProgressBar(static_cast<float>(std::clamp(fraction, 0.0, 1.0)));
+  ImGui::End();
+  ImGui::Render();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w_, fb_h_);
+  if (composed_ && composed_.width() == image_w_ && composed_.height() == image_h_) {
+    glNamedFramebufferTexture(blit_fbo_.id(), GL_COLOR_ATTACHMENT0, composed_.id(), 0);
+    glBlitNamedFramebuffer(blit_fbo_.id(), 0, 0, 0, image_w_, image_h_, 0, fb_h_ - image_h_, image_w_, fb_h_,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  window_->present();
+}
+
+// Debug views are offered for the techniques that produce them (their declarations).
+bool Viewer::view_offered(int view) const {
+  if (view == kViewTraceable || view >= static_cast<int>(view_table().size())) return true;
+  const ViewInfo& v = view_table()[static_cast<std::size_t>(view)];
+  if (!v.debug) return true;
+  for (int i = 0; i < (compare_ == CompareOff ? 1 : 2); ++i) {
+    const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
+    if (std::find(d.begin(), d.end(), v.mode) != d.end()) return true;
+  }
+  return false;
+}
+
+}  // namespace ssr
