@@ -9,6 +9,8 @@
 
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "registry/presets.h"
+#include "techniques/assignments.h"
 #include "scene/animation.h"
 #include "viewer/viewer.h"
 
@@ -38,13 +40,16 @@ void Viewer::on_Technique(const std::string& a) { set_technique(sides_[0], a); }
 void Viewer::on_TechniqueB(const std::string& a) { set_technique(sides_[1], a); }
 void Viewer::on_Set(const std::string& a) { apply_sets({a}); }
 
+void Viewer::on_Preset(const std::string& a) { use_named_preset(sides_[0], a); }
+
 void Viewer::on_Swap(const std::string&) {
   std::swap(sides_[0], sides_[1]);
   psnr_key_.clear();
 }
 
 void Viewer::on_Compare(const std::string& a) {
-  compare_ = a == "split" ? CompareSplit : a == "diff" ? CompareDiff : CompareOff;
+  compare_ = parse_compare_mode(a);
+  ensure_grid_truth();
 }
 
 void Viewer::on_Split(const std::string& a) {

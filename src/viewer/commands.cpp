@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "render/renderer.h"
 #include "techniques/technique.h"
+#include "registry/presets.h"
 #include "registry/registry.h"
 
 namespace ssr {
@@ -50,10 +51,7 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
       return;
     }
     case ArgForm::Size: parse_size(a); return;
-    case ArgForm::Compare:
-      if (a != "off" && a != "split" && a != "diff")
-        throw InputError(at + "compare mode '" + a + "' is not one of off, split, diff.");
-      return;
+    case ArgForm::Compare: parse_compare_mode(a); return;
     case ArgForm::View: {
       const auto& names = viewer_view_names();
       if (std::find(names.begin(), names.end(), a) == names.end()) {
@@ -91,6 +89,7 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
       if (v < 2 || v > 16 || v != std::floor(v)) throw InputError(at + "zoom '" + a + "' must be off or a whole number in [2,16].");
       return;
     }
+    case ArgForm::PresetName: find_preset(a); return;  // throws listing the names
     case ArgForm::Png:
       if (std::filesystem::path(a).extension() != ".png")
         throw InputError(at + "screenshot '" + a + "' must end in .png.");
@@ -99,6 +98,27 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
 }
 
 }  // namespace
+
+CompareMode parse_compare_mode(const std::string& name) {
+  std::string known;
+  for (const CompareInfo& c : kCompareModes) {
+    if (name == c.name) return c.mode;
+    known += (known.empty() ? "" : ", ") + std::string(c.name);
+  }
+  throw InputError("compare mode '" + name + "' is not one of " + known + ".");
+}
+
+std::vector<std::string> compare_mode_names() {
+  std::vector<std::string> names;
+  for (const CompareInfo& c : kCompareModes) names.push_back(c.name);
+  return names;
+}
+
+static_assert([] {
+  for (std::size_t i = 0; i < std::size(kCompareModes); ++i)
+    if (static_cast<std::size_t>(kCompareModes[i].mode) != i) return false;
+  return true;
+}(), "kCompareModes is in CompareMode order");
 
 const CommandInfo& command_info(Verb verb) { return kCommands[static_cast<std::size_t>(verb)]; }
 

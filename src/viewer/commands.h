@@ -22,8 +22,9 @@
   X(Technique, "technique", Technique, "NAME", "technique A")                                           \
   X(TechniqueB, "technique-b", Technique, "NAME", "technique B")                                        \
   X(Set, "set", Assignment, "TECH.KEY=VALUE", "a parameter of A or B (the prefix says which)")          \
+  X(Preset, "preset", PresetName, "NAME", "technique A set up by a named preset of the CLI (ssrlab presets, e.g. thesis-hq)") \
   X(Swap, "swap", None, "", "swap techniques A and B, with their parameters")                            \
-  X(Compare, "compare", Compare, "off|split|diff", "A alone, A | B with a divider, or |A - B| as a heat map") \
+  X(Compare, "compare", Compare, "off|split|diff|grid", "the compare mode (kCompareModes below)")          \
   X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \
   X(View, "view", View, "NAME", "a display view (final, reflection, ..., traceable)")                  \
   X(Exposure, "exposure", Number, "STOPS", "display exposure")                                          \
@@ -50,8 +51,26 @@
 
 namespace ssr {
 
+// The compare modes, declared once: the compare command, presets, the panel's radio buttons.
+enum CompareMode : int { CompareOff = 0, CompareSplit = 1, CompareDiff = 2, CompareGrid = 3 };
+struct CompareInfo {
+  CompareMode mode;
+  const char* name;   // as scripts and presets write it
+  const char* label;  // the panel's
+  const char* help;
+};
+inline constexpr CompareInfo kCompareModes[] = {
+    {CompareOff, "off", "A only", "technique A alone"},
+    {CompareSplit, "split", "split", "A left and B right of a divider you drag"},
+    {CompareDiff, "diff", "difference", "|A - B| of the display values as a heat map"},
+    {CompareGrid, "grid", "grid", "2x2 at a quarter of the image each: A, B, the truth, |A - truth|"},
+};
+// The named mode; throws InputError listing the names.
+CompareMode parse_compare_mode(const std::string& name);
+std::vector<std::string> compare_mode_names();
+
 // The form of a command's arguments (each checked before a script runs).
-enum class ArgForm { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png, OnOff, TruthPolicy, Pixel, Zoom };
+enum class ArgForm { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png, OnOff, TruthPolicy, Pixel, Zoom, PresetName };
 
 enum class Verb {
 #define SSRLAB_X(id, verb, form, args, help) id,

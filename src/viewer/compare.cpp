@@ -47,12 +47,21 @@ std::string Viewer::frame_key() const {
   std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d|%g",
                 static_cast<unsigned long long>(renderer_->scene_id()), lighting_revision_, c.position.x,
                 c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view_,
-                renderer_->settings.exposure, image_w_, image_h_, time_);
+                renderer_->settings.exposure, render_w(), render_h(), time_);
   return buf;
 }
 
 // Techniques too slow to run every frame (CPU ray tracing) run when asked: the registry's flag.
 bool Viewer::on_demand(int i) const { return technique_info(sides_[i].technique->name()).on_demand; }
+
+// The grid's truth: the registry's truth technique, made when the grid is first shown.
+void Viewer::ensure_grid_truth() {
+  if (compare_ != CompareGrid || sides_[2].technique) return;
+  for (const TechniqueInfo& t : technique_registry())
+    if (t.truth && !sides_[2].technique) set_technique(sides_[2], t.name);
+}
+
+int Viewer::active_sides() const { return compare_ == CompareOff ? 1 : compare_ == CompareGrid ? 3 : 2; }
 
 bool Viewer::side_current(int i) const {
   const Side& s = sides_[i];
@@ -60,7 +69,7 @@ bool Viewer::side_current(int i) const {
 }
 
 std::string Viewer::truth_state() const {
-  const int n = compare_ == CompareOff ? 1 : 2;
+  const int n = active_sides();
   std::string state = "none";
   for (int i = 0; i < n; ++i) {
     if (!on_demand(i)) continue;
@@ -78,8 +87,13 @@ nlohmann::json Viewer::inspect(int x, int y) const {
   if (x < 0 || y < 0 || x >= image_w_ || y >= image_h_ || !composed_)
     throw InputError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                      std::to_string(image_w_) + "x" + std::to_string(image_h_) + " image.");
-  const int n = compare_ == CompareOff ? 1 : 2;
-  SideImages images[2];
+  if (compare_ == CompareGrid) {  // the cell's own pixel (each cell is a frame of its own)
+    x %= std::max(render_w(), 1);
+    y %= std::max(render_h(), 1);
+    if (x >= render_w() || y >= render_h()) throw InputError("the grid has no cell at that pixel.");
+  }
+  const int n = active_sides();
+  SideImages images[3];
   std::optional<int> truth;
   const std::vector<PixelClass>* classes = nullptr;
   for (int i = 0; i < n; ++i) {
@@ -94,7 +108,7 @@ nlohmann::json Viewer::inspect(int x, int y) const {
   }
   if (!classes && mask_ref_ && mask_key_ == frame_key()) classes = reference_outputs(*mask_ref_).classes;
   nlohmann::json j = inspect_pixel(*renderer_, x, y, images, n, classes, truth);
-  for (int i = 0; i < n; ++i) j[i == 0 ? "a" : "b"]["current"] = side_current(i);
+  for (int i = 0; i < n; ++i) j[side_key(i)]["current"] = side_current(i);
   return j;
 }
 
@@ -110,38 +124,44 @@ void Viewer::update_traceable_mask() {
   }
   renderer_->render(current_frame(), *mask_ref_, ViewMode::Final, nullptr);
   const ReferenceOutputs out = reference_outputs(*mask_ref_);
-  RgbaImage8 im = class_map(*out.classes, image_w_, image_h_);
-  gl::flip_rows(im.pixels, image_w_, image_h_, 4);  // texture rows go bottom-up
-  mask_tex_ = gl::Texture2D("viewer traceable mask", GL_RGBA8, image_w_, image_h_);
+  const int w = render_w(), h = render_h();
+  RgbaImage8 im = class_map(*out.classes, w, h);
+  gl::flip_rows(im.pixels, w, h, 4);  // texture rows go bottom-up
+  mask_tex_ = gl::Texture2D("viewer traceable mask", GL_RGBA8, w, h);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, image_w_, image_h_, GL_RGBA, GL_UNSIGNED_BYTE, im.pixels.data());
+  glTextureSubImage2D(mask_tex_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, im.pixels.data());
   mask_key_ = key;
 }
 
 void Viewer::render() {
-  const int w = image_w_, h = image_h_;
+  const bool grid = compare_ == CompareGrid;
+  const int W = image_w_, H = image_h_, w = render_w(), h = render_h();
+  if (w <= 0 || h <= 0) return;
   renderer_->resize(w, h);
   ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
   advance_time();
   cut_ = cut_next_;
   cut_next_ = false;
   if (!view_offered(view_)) view_ = VIEW_FINAL;  // the technique changed: its debug view is gone
-  if (!composed_ || composed_.width() != w || composed_.height() != h) {
-    composed_ = gl::Texture2D("viewer composed", GL_RGBA8, w, h);
+  if (!composed_ || composed_.width() != W || composed_.height() != H) {
+    composed_ = gl::Texture2D("viewer composed", GL_RGBA8, W, H);
     glTextureParameteri(composed_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // the magnifier shows pixels
     glTextureParameteri(composed_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    for (Side& s : sides_) {
-      s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, w, h);
-      s.color = gl::Texture2D("viewer side colour", GL_RGBA16F, w, h);
-      s.debug = gl::Texture2D("viewer side debug", GL_RGBA16F, w, h);
-      const std::uint8_t black[4] = {0, 0, 0, 255};
-      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
-      s.valid = false;
-      s.shown_key.clear();
-    }
+  }
+  for (Side& s : sides_) {
+    if (s.copy && s.copy.width() == w && s.copy.height() == h) continue;
+    s.copy = gl::Texture2D("viewer side copy", GL_RGBA8, w, h);
+    s.color = gl::Texture2D("viewer side colour", GL_RGBA16F, w, h);
+    s.debug = gl::Texture2D("viewer side debug", GL_RGBA16F, w, h);
+    const std::uint8_t black[4] = {0, 0, 0, 255};
+    glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
+    s.valid = false;
+    s.shown_key.clear();
     psnr_valid_ = false;
     psnr_key_.clear();
   }
+  const std::uint8_t black[4] = {0, 0, 0, 255};
+  if (grid) glClearTexImage(composed_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, black);  // an odd size's last row and column
   if (view_ == kViewTraceable) {
     update_traceable_mask();
     if (mask_tex_.width() == w && mask_tex_.height() == h)
@@ -150,7 +170,7 @@ void Viewer::render() {
   }
   const std::string fkey = frame_key();
   const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
-  const int n_sides = compare_ == CompareOff ? 1 : 2;
+  const int n_sides = active_sides();
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     const std::string key = fkey + "|" + technique_key(*s.technique);
@@ -198,19 +218,34 @@ void Viewer::render() {
       while (s.history.size() > 120) s.history.pop_front();
     }
   }
-  // Compose A | B (split), the heat map (difference), or A alone.
-  if (compare_ == CompareDiff) {
+  // Compose A | B (split), the heat map (difference), the grid, or A alone.
+  auto diff_into = [&](const gl::Texture2D& a, const gl::Texture2D& b, const gl::Texture2D& out) {
     glUseProgram(diff_prog_.id());
-    glBindTextureUnit(TEX_DIFF_A, sides_[0].copy.id());
-    glBindTextureUnit(TEX_DIFF_B, sides_[1].copy.id());
-    glBindImageTexture(IMG_DIFF_OUT, composed_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindTextureUnit(TEX_DIFF_A, a.id());
+    glBindTextureUnit(TEX_DIFF_B, b.id());
+    glBindImageTexture(IMG_DIFF_OUT, out.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUniform1f(0, diff_scale_);
-    diff_prog_.dispatch_2d(w, h);
-    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    diff_prog_.dispatch_2d(out.width(), out.height());
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindTextureUnit(TEX_DIFF_A, 0);
     glBindTextureUnit(TEX_DIFF_B, 0);
+  };
+  auto copy_to = [&](const gl::Texture2D& from, int x, int y) {  // (x, y): GL texel of the cell's corner
+    glCopyImageSubData(from.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, x, y, 0, w, h, 1);
+  };
+  if (compare_ == CompareDiff) {
+    diff_into(sides_[0].copy, sides_[1].copy, composed_);
+  } else if (grid) {
+    // A | B on top, truth | |A - truth| below (texture rows go up: the top cells start at H - h).
+    if (!grid_diff_ || grid_diff_.width() != w || grid_diff_.height() != h)
+      grid_diff_ = gl::Texture2D("viewer grid difference", GL_RGBA8, w, h);
+    diff_into(sides_[0].copy, sides_[2].copy, grid_diff_);
+    copy_to(sides_[0].copy, 0, H - h);
+    copy_to(sides_[1].copy, w, H - h);
+    copy_to(sides_[2].copy, 0, H - 2 * h);
+    copy_to(grid_diff_, w, H - 2 * h);
   } else {
-    glCopyImageSubData(sides_[0].copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    copy_to(sides_[0].copy, 0, 0);
     const int x0 = std::clamp(static_cast<int>(std::lround(split_ * static_cast<float>(w))), 0, w);
     if (compare_ == CompareSplit && x0 < w)
       glCopyImageSubData(sides_[1].copy.id(), GL_TEXTURE_2D, 0, x0, 0, 0, composed_.id(), GL_TEXTURE_2D, 0, x0, 0, 0,

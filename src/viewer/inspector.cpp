@@ -28,6 +28,8 @@ nlohmann::json vec(const float* v, int n) {
 
 }  // namespace
 
+const char* side_key(int i) { return i == 0 ? "a" : i == 1 ? "b" : "truth"; }
+
 const char* pixel_class_name(PixelClass c) {
   switch (c) {
     case PixelClass::NotReflective: return "not-reflective";
@@ -65,7 +67,7 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   const std::size_t at = static_cast<std::size_t>(y) * g.depth.width() + x;
   j["class"] = classes && at < classes->size() ? nlohmann::json(pixel_class_name((*classes)[at])) : nlohmann::json(nullptr);
   j["exposure"] = r.settings.exposure;
-  std::array<std::array<std::uint8_t, 4>, 2> shown{};
+  std::array<std::array<std::uint8_t, 4>, 3> shown{};
   for (int i = 0; i < n_sides; ++i) {
     const SideImages& s = sides[i];
     nlohmann::json k;
@@ -83,7 +85,7 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
         k["hit_distance"] = d[2];
       }
     }
-    j[i == 0 ? "a" : "b"] = k;
+    j[side_key(i)] = k;
   }
   if (truth && *truth < n_sides) {
     // The error against the truth as the figures take it: display values of the final colour.
@@ -93,7 +95,7 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
       const auto c = texel<float, 4>(*sides[i].color, x, y, GL_RGBA, GL_FLOAT);
       const glm::vec3 v = shared::display_transform(glm::vec3(c[0], c[1], c[2]), r.settings.exposure);
       const glm::vec3 d = glm::abs(v - t);
-      j[i == 0 ? "a" : "b"]["error"] = (d.x + d.y + d.z) / 3.0f;
+      j[side_key(i)]["error"] = (d.x + d.y + d.z) / 3.0f;
     }
   }
   return j;

@@ -26,11 +26,13 @@ struct SideImages {
 // top) when one is current. `truth`: the side (0 or 1) that is the ground truth, if any.
 // Keys: pixel, depth (reversed-Z), view_depth (m), normal (view space), roughness, albedo,
 // metallic, reflector, reflectance, flags, object, reflective, class, exposure, and per side
-// "a"/"b": technique, colour (linear), display (0..255 of the shown view), steps, hits,
+// (side_key: "a", "b", "truth"): technique, colour (linear), display (0..255 of the shown view), steps, hits,
 // hit_distance, offset (ppr), error (mean |side - truth| of display values, 0..1).
 nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,
                              const std::vector<PixelClass>* classes, std::optional<int> truth);
 
 const char* pixel_class_name(PixelClass c);
+// The JSON key of side i: "a", "b", "truth" (the grid's third).
+const char* side_key(int i);
 
 }  // namespace ssr

@@ -1,5 +1,7 @@
 #include "viewer/preset.h"
 
+#include "viewer/commands.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -36,7 +38,6 @@ using files::fail;
 using files::q;
 
 constexpr std::uintmax_t kMaxPresetBytes = 1u << 20;
-const std::vector<std::string> kCompareNames = {"off", "split", "diff"};
 
 std::string join_names(const std::vector<std::string>& names) {
   std::string s;
@@ -237,7 +238,7 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
     read_technique(r, j["technique_a"], "technique_a", p.technique_a, p.params_a);
   if (j.contains("technique_b"))
     read_technique(r, j["technique_b"], "technique_b", p.technique_b, p.params_b);
-  if (j.contains("compare")) p.compare = r.one_of(j["compare"], "compare", kCompareNames);
+  if (j.contains("compare")) p.compare = r.one_of(j["compare"], "compare", compare_mode_names());
   if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0, 1.0);
   if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01, 1.0);
   if (j.contains("view")) p.view = r.one_of(j["view"], "view", viewer_view_names());

@@ -14,7 +14,7 @@
 //   "technique_b": {"name": "none", "params": {}}
 //       params: parameter names without the technique prefix; numbers, true/false or a
 //       choice's name, checked as --set checks them; names left out take their defaults
-//   "compare": "off" | "split" | "diff"   A alone, split view, difference heat map
+//   "compare": "off"                      a compare mode (commands.h: off, split, diff, grid)
 //   "split": 0.5                          divider position in [0, 1]
 //   "diff_scale": 0.25                    heat map full scale in [0.01, 1]
 //   "view": "final"                       a --view name, or "traceable" (viewer_view_names)
@@ -50,7 +50,7 @@ struct ViewerPreset {
                                       // camera `camera_name`
   std::string technique_a = "linear", technique_b = "none";
   std::vector<std::string> params_a, params_b;  // "name=value", no technique prefix
-  std::string compare = "off";        // off | split | diff
+  std::string compare = "off";        // kCompareModes' names
   float split = 0.5f, diff_scale = 0.25f;
   std::string view = "final";
   float exposure = 0.0f;

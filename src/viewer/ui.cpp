@@ -172,6 +172,19 @@ void Viewer::draw_image_overlays() {
   ImDrawList* bg = ImGui::GetBackgroundDrawList();
   bg->PushClipRect(ImVec2(0, 0), ImVec2(w, h));
   const float x = compare_ == CompareSplit ? split_ * w : 0.0f;
+  const float cw = std::floor(static_cast<float>(render_w()) / sx), ch = std::floor(static_cast<float>(render_h()) / sx);
+  auto label = [&](ImVec2 at, const std::string& text) {  // on a dark box: readable on any image
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    bg->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2), colour(0, 0, 0, 0.7f), 2.0f);
+    bg->AddText(at, colour(1, 1, 1), text.c_str());
+  };
+  if (compare_ == CompareGrid) {
+    const std::string names[4] = {"A: " + sides_[0].technique->name(), "B: " + sides_[1].technique->name(),
+                                   "truth: " + sides_[2].technique->name(), "|A - truth|"};
+    for (int c = 0; c < 4; ++c) label(ImVec2(cw * static_cast<float>(c % 2) + 8, ch * static_cast<float>(c / 2 + 1) - 22), names[c]);
+    bg->AddLine(ImVec2(cw, 0), ImVec2(cw, 2 * ch), colour(1, 1, 1, 0.5f));
+    bg->AddLine(ImVec2(0, ch), ImVec2(2 * cw, ch), colour(1, 1, 1, 0.5f));
+  }
   if (compare_ == CompareSplit) {
     bg->AddLine(ImVec2(x, 0), ImVec2(x, h), dragging_divider_ ? colour(1, 0.86f, 0.31f) : colour(1, 1, 1, 0.8f), 2.0f);
     const std::string left = "A: " + sides_[0].technique->name(), right = "B: " + sides_[1].technique->name();
@@ -179,21 +192,30 @@ void Viewer::draw_image_overlays() {
     bg->AddText(ImVec2(x + 8, h - 22), colour(1, 1, 1, 0.9f), right.c_str());
   }
   // A side that is not current says so on its part of the image.
-  const int n = compare_ == CompareOff ? 1 : 2;
+  const int n = active_sides();
   for (int i = 0; i < n && view_ != kViewTraceable; ++i) {
     if (side_current(i)) continue;
     const Side& s = sides_[i];
     std::string what;
     if (s.request > 0) what = "computing " + s.technique->name() + " ...";
     else if (!on_demand(i)) continue;  // every-frame sides are current after this frame
-    else if (!s.valid) what = s.technique->name() + ": not computed yet (press 'truth' or rest the camera)";
+    else if (!s.valid) what = s.technique->name() + ": not computed yet" +
+                              (truth_policy_ == TruthPolicy::Rest ? " (once the camera rests)" : " (press 'compute now')");
     else what = s.technique->name() + " is STALE: it shows an earlier view" +
                 (truth_policy_ == TruthPolicy::Rest ? " (recomputed once the camera rests)" : " (press 'compute now')");
-    const float x0 = compare_ == CompareSplit ? (i == 0 ? 0.0f : x) : 0.0f;
-    const float y0 = compare_ == CompareDiff ? 8.0f + 26.0f * static_cast<float>(i) : 8.0f;
+    // The side's part of the image: the banner stays inside it.
+    float x0 = compare_ == CompareSplit ? (i == 0 ? 0.0f : x) : 0.0f, x1 = compare_ == CompareSplit && i == 0 ? x : w;
+    float y0 = compare_ == CompareDiff ? 8.0f + 26.0f * static_cast<float>(i) : 8.0f;
+    if (compare_ == CompareGrid) {
+      x0 = cw * static_cast<float>(i % 2);
+      x1 = x0 + cw;
+      y0 = ch * static_cast<float>(i / 2) + 8.0f;
+    }
     const ImVec2 size = ImGui::CalcTextSize(what.c_str());
+    bg->PushClipRect(ImVec2(x0, 0), ImVec2(x1, h), true);
     bg->AddRectFilled(ImVec2(x0 + 8, y0), ImVec2(x0 + 16 + size.x, y0 + size.y + 8), colour(0.55f, 0.1f, 0.05f, 0.85f), 3.0f);
     bg->AddText(ImVec2(x0 + 12, y0 + 4), colour(1, 0.9f, 0.8f), what.c_str());
+    bg->PopClipRect();
   }
   if (magnifier_ > 0 && hovered_ && composed_) draw_magnifier();
   bg->PopClipRect();
@@ -264,10 +286,10 @@ void Viewer::inspector_panel() {
   };
   for (const auto& [k, v] : j.items())
     if (!v.is_object() && k != "pixel") line(k, v);
-  for (const char* side : {"a", "b"}) {
+  for (const char* side : {"a", "b", "truth"}) {
     if (!j.contains(side)) continue;
     ImGui::Separator();
-    ImGui::Text("%s: %s%s", side[0] == 'a' ? "A" : "B", j[side]["technique"].get<std::string>().c_str(),
+    ImGui::Text("%s: %s%s", side, j[side]["technique"].get<std::string>().c_str(),
                 j[side]["current"].get<bool>() ? "" : " (stale)");
     for (const auto& [k, v] : j[side].items())
       if (k != "technique" && k != "current") line(k, v);
@@ -554,12 +576,12 @@ void Viewer::view_panel() {
     ImGui::SliderInt("zoom", &magnifier_, 2, 16, "%dx");
   }
   int mode = compare_;
-  ImGui::RadioButton("A only", &mode, CompareOff);
-  ImGui::SameLine();
-  ImGui::RadioButton("split", &mode, CompareSplit);
-  ImGui::SameLine();
-  ImGui::RadioButton("difference", &mode, CompareDiff);
-  if (mode != compare_) ui_command(Verb::Compare, kCompareNames[mode]);
+  for (const CompareInfo& c : kCompareModes) {
+    if (c.mode != CompareOff) ImGui::SameLine();
+    ImGui::RadioButton(c.label, &mode, c.mode);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (command: compare %s)", c.help, c.name);
+  }
+  if (mode != compare_) ui_command(Verb::Compare, kCompareModes[mode].name);
   if (compare_ == CompareSplit) ImGui::SliderFloat("divider", &split_, 0.0f, 1.0f, "%.3f");
   if (compare_ == CompareDiff) {
     ImGui::SliderFloat("full scale", &diff_scale_, 0.01f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
@@ -599,6 +621,22 @@ void Viewer::technique_panel(int i) {
       if (ImGui::Selectable(t.name.c_str(), t.name == side.technique->name()))
         ui_command(i == 0 ? Verb::Technique : Verb::TechniqueB, t.name);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.description.c_str());
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::BeginCombo("named preset", "set up from a preset ...")) {
+    for (const Preset& p : presets()) {
+      if (ImGui::Selectable(p.name.c_str())) {
+        if (i == 0) ui_command(Verb::Preset, p.name);
+        else {
+          try {
+            use_named_preset(side, p.name);
+          } catch (const std::exception& e) {
+            set_status(e.what(), true);
+          }
+        }
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s", p.technique.c_str(), p.source.c_str());
     }
     ImGui::EndCombo();
   }
@@ -653,7 +691,7 @@ void Viewer::time_panel() {
 void Viewer::timing_panel(double dt) {
   const bool gpu = clock_ == gl::PassTimer::Clock::Gpu;
   const char* clock_name = gpu ? "gpu" : "cpu";
-  const int n = compare_ != CompareOff ? 2 : 1;
+  const int n = active_sides();
   std::vector<std::string> passes;
   std::vector<double> total(static_cast<std::size_t>(n), 0.0);
   for (int i = 0; i < n; ++i)
@@ -664,7 +702,7 @@ void Viewer::timing_panel(double dt) {
   if (ImGui::BeginTable("passes", 1 + 2 * n, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
     for (int i = 0; i < n; ++i) {
-      ImGui::TableSetupColumn(i == 0 ? "A ms" : "B ms");
+      ImGui::TableSetupColumn(i == 0 ? "A ms" : i == 1 ? "B ms" : "truth ms");
       ImGui::TableSetupColumn("%");
     }
     ImGui::TableHeadersRow();
@@ -696,7 +734,7 @@ void Viewer::timing_panel(double dt) {
     const std::vector<float> h(s.history.begin(), s.history.end());
     const float hi = *std::max_element(h.begin(), h.end());
     char overlay[128];
-    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms %s (max %.3f)", i == 0 ? "A" : "B", s.technique->name().c_str(),
+    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms %s (max %.3f)", side_key(i), s.technique->name().c_str(),
                   h.back(), clock_name, hi);
     ImGui::PushID(i);
     ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1e-3f),
@@ -739,10 +777,11 @@ void Viewer::draw_progress(const std::string& what, double fraction) {
 
 // Debug views are offered for the techniques that produce them (their declarations).
 bool Viewer::view_offered(int view) const {
-  if (view == kViewTraceable || view >= static_cast<int>(view_table().size())) return true;
+  if (view == kViewTraceable) return compare_ != CompareGrid;  // the mask is one image
+  if (view >= static_cast<int>(view_table().size())) return true;
   const ViewInfo& v = view_table()[static_cast<std::size_t>(view)];
   if (!v.debug) return true;
-  for (int i = 0; i < (compare_ == CompareOff ? 1 : 2); ++i) {
+  for (int i = 0; i < active_sides(); ++i) {
     const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
     if (std::find(d.begin(), d.end(), v.mode) != d.end()) return true;
   }

@@ -13,6 +13,7 @@
 
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "registry/presets.h"
 #include "registry/registry.h"
 #include "render/image_io.h"
 #include "reference/reference.h"
@@ -50,6 +51,12 @@ std::vector<std::string> scene_choices() {
   std::sort(files.begin(), files.end());
   names.insert(names.end(), files.begin(), files.end());
   return names;
+}
+
+bool is_truth_technique(const std::string& name) {
+  for (const TechniqueInfo& t : technique_registry())
+    if (t.name == name) return t.truth;
+  return false;
 }
 
 int parse_view(const std::string& name) {
@@ -107,20 +114,40 @@ void Viewer::set_technique(Side& side, const std::string& name) {
   side.history.clear();
 }
 
-// Splits assignments between the two techniques by their "<technique>." prefix; keys of
-// neither go to A, whose apply reports them.
+// A named preset (registry/presets.h): its technique with its assignments, checked first.
+void Viewer::use_named_preset(Side& side, const std::string& name) {
+  const Preset& p = find_preset(name);
+  std::unique_ptr<Technique> probe = create_technique(p.technique);
+  apply_assignments(*probe, p.assignments);  // throws before anything changes
+  set_technique(side, p.technique);
+  apply_assignments(*side.technique, p.assignments);
+  set_status("preset " + name + ": " + p.source, false);
+}
+
+// Splits assignments between the techniques by their "<technique>." prefix: A, B, or the truth
+// (the grid's third side, made for them when neither A nor B is the truth); keys of none go to
+// A, whose apply reports them.
 void Viewer::apply_sets(const std::vector<std::string>& sets) {
   Technique& a = *sides_[0].technique;
   Technique& b = *sides_[1].technique;
-  std::vector<std::string> to_a, to_b;
+  std::vector<std::string> to_a, to_b, to_truth;
   for (const std::string& s : sets) {
     const std::string prefix = s.substr(0, s.find('.'));
     const bool for_a = prefix == a.name(), for_b = prefix == b.name();
+    const bool for_truth = !for_a && !for_b && is_truth_technique(prefix);
+    if (for_truth) {
+      if (!sides_[2].technique || sides_[2].technique->name() != prefix) {
+        sides_[2].technique = create_technique(prefix);
+        if (renderer_) set_technique(sides_[2], prefix);  // with GL: loaded now (else in run())
+      }
+      to_truth.push_back(s);
+    }
     if (for_b) to_b.push_back(s);
-    if (for_a || !for_b) to_a.push_back(s);
+    if (for_a || (!for_b && !for_truth)) to_a.push_back(s);
   }
   apply_assignments(a, to_a);
   apply_assignments(b, to_b);
+  if (!to_truth.empty()) apply_assignments(*sides_[2].technique, to_truth);
 }
 
 void Viewer::set_lighting(const std::vector<Light>& lights, const Environment& env, float ambient) {
@@ -140,7 +167,7 @@ ViewerPreset Viewer::capture_preset() const {
   p.technique_b = sides_[1].technique->name();
   p.params_a = capture_params(*sides_[0].technique);
   p.params_b = capture_params(*sides_[1].technique);
-  p.compare = kCompareNames[compare_];
+  p.compare = kCompareModes[compare_].name;
   p.split = std::clamp(split_, 0.0f, 1.0f);  // Ctrl+click on a slider can type beyond its range
   p.diff_scale = std::clamp(diff_scale_, 0.01f, 1.0f);
   p.view = viewer_view_names()[static_cast<std::size_t>(view_)];
@@ -167,7 +194,8 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   set_technique(sides_[1], p.technique_b);
   apply_params(*sides_[0].technique, p.params_a);
   apply_params(*sides_[1].technique, p.params_b);
-  compare_ = p.compare == "split" ? CompareSplit : p.compare == "diff" ? CompareDiff : CompareOff;
+  compare_ = parse_compare_mode(p.compare);
+  ensure_grid_truth();
   split_ = p.split;
   diff_scale_ = p.diff_scale;
   view_ = view;
@@ -186,6 +214,7 @@ void Viewer::reload() {
   try {
     renderer_->reload_shaders();
     for (Side& s : sides_) {
+      if (!s.technique) continue;  // the grid's truth before the grid was shown
       s.technique->load(renderer_->shaders());
       s.instrumented = false;
     }
@@ -302,9 +331,10 @@ int Viewer::run() {
   shaders_ = shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(shader_dir));
   load_scene_spec(o_.scene, o_.camera);
   for (Side& s : sides_) {
+    s.timer = std::make_unique<gl::PassTimer>(clock_);
+    if (!s.technique) continue;  // the grid's truth: made when the grid is first shown
     s.technique->load(renderer_->shaders());
     set_reference_progress(*s.technique, [this](double f) { draw_progress("reference", f); });
-    s.timer = std::make_unique<gl::PassTimer>(clock_);
   }
   diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
   blit_fbo_ = gl::Framebuffer("viewer blit");

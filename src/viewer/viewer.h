@@ -44,8 +44,6 @@ struct ViewerOptions {
   std::string ini;     // ImGui layout file; default: the user's config directory
 };
 
-enum CompareMode : int { CompareOff = 0, CompareSplit = 1, CompareDiff = 2 };
-inline constexpr const char* kCompareNames[] = {"off", "split", "diff"};
 inline constexpr int kViewTraceable = VIEW_COUNT;  // the viewer's own view: the reference's classes
 
 // One side of the comparison: its technique, a copy of its last display image, its timings.
@@ -79,6 +77,7 @@ class Viewer {
   // --- viewer.cpp: set-up and state changes (all validate first and throw InputError) ---
   void load_scene_spec(const std::string& spec, const std::string& camera_name);
   void set_technique(Side& side, const std::string& name);
+  void use_named_preset(Side& side, const std::string& name);
   void apply_sets(const std::vector<std::string>& sets);
   void set_lighting(const std::vector<Light>& lights, const Environment& env, float ambient);
   ViewerPreset capture_preset() const;
@@ -100,6 +99,11 @@ class Viewer {
   bool side_current(int i) const;  // the side's image shows the current frame and parameters
   bool truth_stale() const;        // an on-demand side (the reference) shows another frame
   bool on_demand(int i) const;
+  int active_sides() const;
+  void ensure_grid_truth();  // A; A and B; A, B and the truth (grid)
+  // The frame the techniques render: the image, or a quarter of it in the grid.
+  int render_w() const { return compare_ == CompareGrid ? image_w_ / 2 : image_w_; }
+  int render_h() const { return compare_ == CompareGrid ? image_h_ / 2 : image_h_; }
   std::string truth_state() const;  // "none", "current", "stale" or "computing"
   bool figure_shown() const;        // the A-vs-B figure is of the current frame and shown
   FrameRequest current_frame() const;
@@ -139,11 +143,12 @@ class Viewer {
   float ambient_ = 0.3f;
   int lighting_revision_ = 0;
   std::unique_ptr<Renderer> renderer_;
-  Side sides_[2];
+  Side sides_[3];  // A, B, and the grid's truth
   CameraController camera_;
   double last_moved_ = 0;   // glfw time the camera last moved (the truth waits for it to rest)
   gl::Program diff_prog_;
   gl::Texture2D composed_;    // what the image area and screenshots show (no UI)
+  gl::Texture2D grid_diff_;   // the grid's |A - truth| cell
   gl::Framebuffer blit_fbo_;  // created once the context exists
 
   // Traceable mask: a reference of its own, run on demand, shown as its class map.

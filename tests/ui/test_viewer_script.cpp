@@ -80,4 +80,10 @@ TEST(ViewerScript, CommandTableIsComplete) {
   EXPECT_EQ(cmds[0].verb, Verb::Truth);
   EXPECT_NE(error_of("truth sometimes\n").find("now, rest, live, manual"), std::string::npos);
   EXPECT_NE(error_of("panel maybe\n").find("on or off"), std::string::npos);
+  EXPECT_NE(error_of("preset nosuch\n").find("s.txt:1:"), std::string::npos);
+  EXPECT_NE(error_of("compare sideways\n").find("off, split, diff, grid"), std::string::npos);
+  EXPECT_NE(error_of("inspect 3\n").find("two arguments"), std::string::npos);
+  EXPECT_NE(error_of("inspect -1 2\n").find("pixel coordinate"), std::string::npos);
+  EXPECT_NE(error_of("magnifier 40\n").find("[2,16]"), std::string::npos);
+  EXPECT_EQ(parse_viewer_script("inspect 3 4\n", "s.txt")[0].args, std::vector<std::string>{"3 4"});
 }

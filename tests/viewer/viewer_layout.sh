@@ -6,7 +6,8 @@
 #   - the legend of a heat-map view is drawn (the panel's top holds the view's heat colours);
 #   - a truth left stale (the camera moved, truth manual) shows no figure: the status says
 #     "stale" with no PSNR, and the image carries the red "STALE" banner;
-#   - the status bar shows an error in red.
+#   - the grid has four cells, each labelled (the labels are drawn over the window, never into
+#     the image), and the inspector maps a pixel to its cell's frame.
 # Usage: viewer_layout.sh SSRLAB_VIEW OUTDIR
 set -eu
 viewer=$1; outdir=$2
@@ -40,6 +41,14 @@ window-shot stale.png
 truth now
 frames 2
 status
+truth live
+compare grid
+frames 1
+screenshot grid-image.png
+window-shot grid.png
+inspect 200 120
+preset thesis-hq
+status
 preset-load /nonexistent/preset.json
 SCRIPT
 set +e
@@ -56,7 +65,7 @@ sys.path.insert(0, sys.argv[1])
 from png import read_png
 log = open('log.txt').read()
 status = [json.loads(m) for m in re.findall(r'ssrlab-view: status (\{.*\})', log)]
-assert len(status) == 3, log
+assert len(status) == 4, log
 image, window, legend, wide, nopanel, stale = (read_png(n + '.png') for n in
     ('image', 'window', 'legend', 'wide', 'nopanel', 'stale'))
 def px(img, x, y):
@@ -98,5 +107,21 @@ red = sum(1 for y in range(4, 40) for x in range(165, 320)
           if px(stale, x, y)[0] > 100 and px(stale, x, y)[1] < 60 and px(stale, x, y)[2] < 50)
 print(f'stale banner pixels: {red}')
 assert red > 200, 'the stale truth is not marked on the image'
+# The grid: four cells of 160x90, a label in each cell's bottom-left corner (window only).
+grid, grid_image = read_png('grid.png'), read_png('grid-image.png')
+assert (grid_image[0], grid_image[1]) == (320, 180)
+for c in range(4):
+    x0, y0 = 160 * (c % 2), 90 * (c // 2 + 1) - 24
+    drawn = sum(1 for y in range(y0, y0 + 16) for x in range(x0 + 4, x0 + 60)
+                if px(grid, x, y) != px(grid_image, x, y))
+    print(f'grid cell {c}: {drawn} label pixels')
+    assert drawn > 150, f'grid cell {c} has no label'
+# The cells differ (A, B = the reference, the truth, the difference): not one image four times.
+cells = [[px(grid_image, 160 * (c % 2) + x, 90 * (c // 2) + y) for y in range(10, 60, 5) for x in range(20, 140, 5)] for c in range(4)]
+assert cells[3] != cells[0] and cells[2] != cells[3], 'the grid cells look alike'
+probe = json.loads(re.findall(r'ssrlab-view: inspect (\{.*\})', log)[0])
+assert probe['pixel'] == [200 - 160, 120 - 90] and 'truth' in probe, probe
+# A named preset of the CLI: technique A becomes the preset's, the status names its source.
+assert status[3]['message'].startswith('preset thesis-hq: '), status[3]
 PY
 echo "viewer layout ok"
