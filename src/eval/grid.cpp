@@ -52,12 +52,17 @@ RgbaImage8 heat_map(const RgbaImageF& a, const RgbaImageF& b, const std::vector<
   return out;
 }
 
+glm::vec3 class_colour(PixelClass c) {
+  static const std::uint8_t colors[4][3] = {{0, 0, 0}, {40, 190, 80}, {220, 50, 40}, {60, 110, 230}};
+  const auto* k = colors[static_cast<std::size_t>(c) & 3u];
+  return glm::vec3(k[0], k[1], k[2]) / 255.0f;
+}
+
 RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height) {
   RgbaImage8 out{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height * 4)};
   for (std::size_t p = 0; p < cls.size() && p * 4 < out.pixels.size(); ++p) {
-    static const std::uint8_t colors[4][3] = {{0, 0, 0}, {40, 190, 80}, {220, 50, 40}, {60, 110, 230}};
-    const auto c = static_cast<std::size_t>(cls[p]);
-    for (int k = 0; k < 3; ++k) out.pixels[p * 4 + static_cast<std::size_t>(k)] = colors[c][k];
+    const glm::vec3 c = class_colour(cls[p]) * 255.0f + 0.5f;
+    for (int k = 0; k < 3; ++k) out.pixels[p * 4 + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(c[k]);
     out.pixels[p * 4 + 3] = 255;
   }
   return out;

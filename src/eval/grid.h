@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "core/image.h"
 #include "eval/breakdown.h"
 #include "eval/metrics.h"
@@ -18,6 +20,7 @@ RgbaImage8 heat_map(const RgbaImageF& a, const RgbaImageF& b, const std::vector<
                     float full_scale = 0.25f);
 
 // The ground truth's classes: traceable green, missing red, sky blue, not reflective black.
+glm::vec3 class_colour(PixelClass c);  // display colour in [0, 1]
 RgbaImage8 class_map(const std::vector<PixelClass>& cls, int width, int height);
 
 // A technique's hit classes over a dimmed grey copy of `backdrop` (display values): correct

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
+
+#include "eval/grid.h"
+#include "shared/colormap.h"
 
 namespace ssr {
 
@@ -225,6 +229,105 @@ bool draw_camera_panel(Camera& c) {
   ImGui::TextDisabled("position %.3f %.3f %.3f", c.position.x, c.position.y, c.position.z);
   ImGui::TextDisabled("target   %.3f %.3f %.3f", c.target.x, c.target.y, c.target.z);
   return changed;
+}
+
+namespace {
+
+ImU32 rgb(glm::vec3 c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f)); }
+
+// A 64-step colour bar over the available width, then "0 ... full+ unit" under it.
+template <class Map>
+void colour_bar(Map map, float full, const char* unit, bool clamps) {
+  const float w = std::max(ImGui::GetContentRegionAvail().x - 8.0f, 60.0f), h = 12.0f;
+  const ImVec2 p = ImGui::GetCursorScreenPos();
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 64;
+  for (int i = 0; i < kSteps; ++i)
+    dl->AddRectFilled(ImVec2(p.x + w * static_cast<float>(i) / kSteps, p.y),
+                      ImVec2(p.x + w * static_cast<float>(i + 1) / kSteps + 1, p.y + h),
+                      rgb(map((static_cast<float>(i) + 0.5f) / kSteps)));
+  ImGui::Dummy(ImVec2(w, h));
+  ImGui::TextUnformatted("0");
+  char right[96];
+  std::snprintf(right, sizeof right, "%.3g%s %s", full, clamps ? "+" : "", unit);
+  ImGui::SameLine(std::max(ImGui::GetCursorPosX(), w - ImGui::CalcTextSize(right).x + ImGui::GetStyle().WindowPadding.x));
+  ImGui::TextUnformatted(right);
+}
+
+void swatch(const char* name, glm::vec3 c) {
+  ImGui::ColorButton(name, ImVec4(c.x, c.y, c.z, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+  ImGui::SameLine();
+  ImGui::TextUnformatted(name);
+  if (ImGui::GetContentRegionAvail().x > 150) ImGui::SameLine();
+}
+
+}  // namespace
+
+void draw_view_legend(const ViewInfo& view, float exposure) {
+  const Legend& l = view.legend;
+  ImGui::TextWrapped("%s: %s", view.name, view.description);
+  switch (l.kind) {
+    case Legend::Radiance:
+      ImGui::TextDisabled("tone mapped (ACES, sRGB) at %+.2f stops", exposure);
+      break;
+    case Legend::Grey:
+      colour_bar([](float t) { return glm::vec3(t); }, l.full, l.unit, false);
+      break;
+    case Legend::Heat:
+      colour_bar([](float t) { return shared::heat(t); }, l.full, l.unit, true);
+      break;
+    case Legend::Swatches:
+      for (const Legend::Swatch& s : l.swatches) swatch(s.name, glm::vec3(s.r, s.g, s.b));
+      ImGui::NewLine();
+      break;
+    case Legend::Encoded:
+      break;  // the description says how
+  }
+}
+
+void draw_difference_legend(float full_scale) {
+  ImGui::TextUnformatted("difference |A - B| (display values, mean of RGB)");
+  colour_bar([](float t) { return shared::heat(t); }, full_scale, "of full white", true);
+}
+
+void draw_class_legend() {
+  ImGui::TextUnformatted("the reference's class of each reflective pixel");
+  for (const PixelClass c : {PixelClass::Traceable, PixelClass::Missing, PixelClass::Sky})
+    swatch(c == PixelClass::Traceable ? "traceable" : c == PixelClass::Missing ? "missing" : "sky", class_colour(c));
+  ImGui::NewLine();
+}
+
+void draw_pixel_values(const nlohmann::json& values) {
+  auto text = [](const nlohmann::json& v) {
+    char buf[32];
+    if (v.is_number_float()) {
+      std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
+      return std::string(buf);
+    }
+    if (!v.is_array()) return v.dump();
+    std::string s;
+    for (const auto& e : v) {
+      if (e.is_number_float()) std::snprintf(buf, sizeof buf, "%.4g", e.get<double>());
+      else std::snprintf(buf, sizeof buf, "%s", e.dump().c_str());
+      s += (s.empty() ? "" : "  ") + std::string(buf);
+    }
+    return s;
+  };
+  auto line = [&](const std::string& k, const nlohmann::json& v) {
+    ImGui::TextDisabled("%s", k.c_str());
+    ImGui::SameLine(110);
+    ImGui::TextUnformatted(text(v).c_str());
+  };
+  for (const auto& [k, v] : values.items())
+    if (!v.is_object() && k != "pixel") line(k, v);
+  for (const char* side : {"a", "b", "truth"}) {
+    if (!values.contains(side)) continue;
+    const nlohmann::json& s = values[side];
+    ImGui::Separator();
+    ImGui::Text("%s: %s%s", side, s.value("technique", "?").c_str(), s.value("current", true) ? "" : " (stale)");
+    for (const auto& [k, v] : s.items())
+      if (k != "technique" && k != "current") line(k, v);
+  }
 }
 
 }  // namespace ssr

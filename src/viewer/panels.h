@@ -4,6 +4,9 @@
 #pragma once
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "render/views.h"
 #include "scene/scene.h"
 #include "core/params.h"
 
@@ -26,5 +29,16 @@ bool draw_environment_panel(Environment& environment, float& ambient);
 // Field of view, near and far of `camera` (kept valid: 1 < fov < 179, 0 < near < far), and its
 // position and target as read-outs. Returns true when something changed.
 bool draw_camera_panel(Camera& camera);
+
+// How to read the image: the view's legend (render/views.h: a colour bar with its scale and
+// unit, swatches, or the description of an encoding; tone-mapped views name the exposure), the
+// difference view's heat scale, the reference's class colours (eval/grid.h's class_colour).
+// The bars are drawn with shared/colormap.h, the function the image was drawn with.
+void draw_view_legend(const ViewInfo& view, float exposure);
+void draw_difference_legend(float full_scale);
+void draw_class_legend();
+
+// The pixel inspector's values (viewer/inspector.h's JSON): one line a value, then per side.
+void draw_pixel_values(const nlohmann::json& values);
 
 }  // namespace ssr

@@ -265,35 +265,7 @@ void Viewer::inspector_panel() {
     return;
   }
   ImGui::Text("pixel %d, %d%s", p->x, p->y, pinned_ ? " (pinned: I to follow the cursor)" : "");
-  auto line = [](const std::string& k, const nlohmann::json& v) {
-    std::string s = v.is_number_float() ? "" : v.dump();
-    if (v.is_number_float()) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
-      s = buf;
-    } else if (v.is_array()) {
-      s.clear();
-      for (const auto& e : v) {
-        char buf[32];
-        if (e.is_number_float()) std::snprintf(buf, sizeof buf, "%.4g", e.get<double>());
-        else std::snprintf(buf, sizeof buf, "%s", e.dump().c_str());
-        s += (s.empty() ? "" : "  ") + std::string(buf);
-      }
-    }
-    ImGui::TextDisabled("%s", k.c_str());
-    ImGui::SameLine(110);
-    ImGui::TextUnformatted(s.c_str());
-  };
-  for (const auto& [k, v] : j.items())
-    if (!v.is_object() && k != "pixel") line(k, v);
-  for (const char* side : {"a", "b", "truth"}) {
-    if (!j.contains(side)) continue;
-    ImGui::Separator();
-    ImGui::Text("%s: %s%s", side, j[side]["technique"].get<std::string>().c_str(),
-                j[side]["current"].get<bool>() ? "" : " (stale)");
-    for (const auto& [k, v] : j[side].items())
-      if (k != "technique" && k != "current") line(k, v);
-  }
+  draw_pixel_values(j);
 }
 
 // The status bar: panel and keys toggles, the latest message (errors red), the truth's state,
@@ -357,71 +329,10 @@ void Viewer::help_window() {
 // The legend of what the image shows: a colour bar with its scale and unit, swatches, or how
 // the colour encodes a vector; the difference view's heat scale.
 void Viewer::legend() {
-  const float bar_w = std::max(ImGui::GetContentRegionAvail().x - 8.0f, 60.0f), bar_h = 12.0f;
-  auto colour_bar = [&](auto&& map) {
-    const ImVec2 p = ImGui::GetCursorScreenPos();
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const int n = 64;
-    for (int i = 0; i < n; ++i) {
-      const glm::vec3 c = map((static_cast<float>(i) + 0.5f) / n);
-      dl->AddRectFilled(ImVec2(p.x + bar_w * static_cast<float>(i) / n, p.y),
-                        ImVec2(p.x + bar_w * static_cast<float>(i + 1) / n + 1, p.y + bar_h), colour(c.x, c.y, c.z));
-    }
-    ImGui::Dummy(ImVec2(bar_w, bar_h));
-  };
-  auto scale = [&](float lo, float hi, const char* unit, bool clamps) {
-    ImGui::Text("%.3g", lo);
-    char right[96];
-    std::snprintf(right, sizeof right, "%.3g%s %s", hi, clamps ? "+" : "", unit);
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX(), bar_w - ImGui::CalcTextSize(right).x + ImGui::GetStyle().WindowPadding.x));
-    ImGui::TextUnformatted(right);
-  };
-  if (compare_ == CompareDiff && view_ != kViewTraceable) {
-    ImGui::TextUnformatted("difference |A - B| (display values, mean of RGB)");
-    colour_bar([](float t) { return shared::heat(t); });
-    scale(0.0f, diff_scale_, "of full white", true);
-    return;
-  }
-  if (view_ == kViewTraceable) {
-    ImGui::TextUnformatted("the reference's classes of each reflective pixel");
-    const struct { const char* name; ImU32 c; } classes[] = {
-        {"traceable", IM_COL32(40, 190, 80, 255)}, {"missing", IM_COL32(220, 50, 40, 255)}, {"sky", IM_COL32(60, 110, 230, 255)}};
-    for (const auto& k : classes) {
-      ImGui::ColorButton(k.name, ImGui::ColorConvertU32ToFloat4(k.c), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
-      ImGui::SameLine();
-      ImGui::TextUnformatted(k.name);
-      ImGui::SameLine();
-    }
-    ImGui::NewLine();
-    return;
-  }
-  const ViewInfo& v = view_table()[static_cast<std::size_t>(view_)];
-  const Legend& l = v.legend;
-  ImGui::TextWrapped("%s: %s", v.name, v.description);
-  switch (l.kind) {
-    case Legend::Radiance:
-      ImGui::TextDisabled("tone mapped (ACES, sRGB) at %+.2f stops", renderer_->settings.exposure);
-      break;
-    case Legend::Grey:
-      colour_bar([](float t) { return glm::vec3(t); });
-      scale(0.0f, l.full, l.unit, false);
-      break;
-    case Legend::Heat:
-      colour_bar([](float t) { return shared::heat(t); });
-      scale(0.0f, l.full, l.unit, true);
-      break;
-    case Legend::Swatches:
-      for (const Legend::Swatch& s : l.swatches) {
-        ImGui::ColorButton(s.name, ImVec4(s.r, s.g, s.b, 1), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
-        ImGui::SameLine();
-        ImGui::TextUnformatted(s.name);
-        if (ImGui::GetContentRegionAvail().x > 150) ImGui::SameLine();
-      }
-      ImGui::NewLine();
-      break;
-    case Legend::Encoded:
-      break;  // the description says how
-  }
+  if (compare_ == CompareDiff && view_ != kViewTraceable) draw_difference_legend(diff_scale_);
+  else if (view_ == kViewTraceable) draw_class_legend();
+  else draw_view_legend(view_table()[static_cast<std::size_t>(view_)], renderer_->settings.exposure);
+  if (compare_ == CompareGrid) draw_difference_legend(diff_scale_);  // the grid's fourth cell
 }
 
 // --- the side panel ------------------------------------------------------------------------

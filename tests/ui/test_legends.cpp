@@ -1,0 +1,104 @@
+// The legends and the inspector's value list under Dear ImGui's null backend: every view's
+// legend draws the colours its image is drawn with (heat and grey bars from shared/colormap.h,
+// each swatch), views without a scale draw no bar, and the pixel values list draws one line a
+// value and a block per side.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "eval/grid.h"
+#include "imgui_harness.h"
+#include "shared/colormap.h"
+#include "viewer/panels.h"
+
+namespace ssr {
+namespace {
+
+using test::ImGuiHarness;
+
+ImU32 rgb(glm::vec3 c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f)); }
+
+// Every vertex colour of the last frame.
+std::set<ImU32> drawn_colours() {
+  std::set<ImU32> out;
+  const ImDrawData* d = ImGui::GetDrawData();
+  for (int i = 0; d && i < d->CmdListsCount; ++i)
+    for (const ImDrawVert& v : d->CmdLists[i]->VtxBuffer) out.insert(v.col);
+  return out;
+}
+
+// The bar's middle step, as colour_bar samples it.
+constexpr float kMid = (32 + 0.5f) / 64;
+
+TEST(Legends, EveryViewDrawsItsScaleOrSwatches) {
+  ImGuiHarness ui;
+  for (const ViewInfo& v : view_table()) {
+    ui.frame([&] {
+      draw_view_legend(v, 0.0f);
+      return false;
+    });
+    const std::set<ImU32> c = drawn_colours();
+    const bool heat = c.count(rgb(shared::heat(kMid))) > 0, grey = c.count(rgb(glm::vec3(kMid))) > 0;
+    switch (v.legend.kind) {
+      case Legend::Heat:
+        EXPECT_TRUE(heat) << v.name << ": no heat bar";
+        break;
+      case Legend::Grey:
+        EXPECT_TRUE(grey) << v.name << ": no grey bar";
+        break;
+      case Legend::Swatches:
+        EXPECT_GE(v.legend.swatches.size(), 2u) << v.name;
+        for (const Legend::Swatch& s : v.legend.swatches)
+          EXPECT_TRUE(c.count(rgb(glm::vec3(s.r, s.g, s.b)))) << v.name << ": swatch " << s.name << " not drawn";
+        break;
+      case Legend::Radiance:
+      case Legend::Encoded:
+        EXPECT_FALSE(heat || grey) << v.name << ": a bar for a view without a scale";
+        break;
+    }
+    // Every heat-map view says so in its legend (a heat view without one would be unreadable).
+    if (std::string(v.description).find("heat map") != std::string::npos) EXPECT_EQ(v.legend.kind, Legend::Heat) << v.name;
+  }
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+TEST(Legends, DifferenceAndClassLegends) {
+  ImGuiHarness ui;
+  ui.frame([] {
+    draw_difference_legend(0.25f);
+    return false;
+  });
+  EXPECT_TRUE(drawn_colours().count(rgb(shared::heat(kMid))));
+  ui.frame([] {
+    draw_class_legend();
+    return false;
+  });
+  const std::set<ImU32> c = drawn_colours();
+  for (const PixelClass k : {PixelClass::Traceable, PixelClass::Missing, PixelClass::Sky})
+    EXPECT_TRUE(c.count(rgb(class_colour(k)))) << static_cast<int>(k);
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+TEST(Legends, PixelValuesOneLineEach) {
+  ImGuiHarness ui;
+  const nlohmann::json one = {{"pixel", {1, 2}}, {"depth", 0.5}, {"object", 3}};
+  nlohmann::json two = one;
+  two["normal"] = {0.0, 1.0, 0.0};
+  two["a"] = {{"technique", "hiz"}, {"current", true}, {"steps", 12.0}, {"display", {1, 2, 3}}};
+  two["b"] = {{"technique", "reference"}, {"current", false}, {"error", 0.0}};
+  ui.frame([&] {
+    draw_pixel_values(one);
+    return false;
+  });
+  const float short_list = ui.bottom();
+  ui.frame([&] {
+    draw_pixel_values(two);
+    return false;
+  });
+  // One more value line and two sides (a heading and their values): at least 6 more lines.
+  EXPECT_GT(ui.bottom() - short_list, 6 * ImGui::GetTextLineHeight());
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+}  // namespace
+}  // namespace ssr
