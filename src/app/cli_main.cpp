@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/docs.h"
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
 #include "registry/presets.h"
@@ -98,7 +99,17 @@ int main(int argc, char** argv) {
   std::vector<Command> commands = {add_render_command(app), add_compare_command(app),
                                    add_bench_command(app), add_sequence_command(app)};
   CLI::App* scenes = app.add_subcommand("scenes", "List the built-in scenes and scene files.");
+  bool scenes_md = false;
+  scenes->add_flag("--markdown", scenes_md, "The README's scene table instead.");
   CLI::App* techniques = app.add_subcommand("techniques", "List every technique with every parameter, and the presets.");
+  std::string techniques_md;
+  techniques->add_option("--markdown", techniques_md, "The README's technique table (summary) or docs/PARAMETERS.md (parameters).")
+      ->check(CLI::IsMember({"summary", "parameters"}))
+      ->expected(0, 1)
+      ->default_str("summary");
+  CLI::App* views = app.add_subcommand("views", "List the views (--view): what each shows, its legend, who offers it.");
+  bool views_md = false;
+  views->add_flag("--markdown", views_md, "The README's view table (the same table as Markdown).");
 
   try {
     app.parse(argc, argv);
@@ -113,8 +124,16 @@ int main(int argc, char** argv) {
   try {
     for (const Command& c : commands)
       if (c.sub->parsed()) return c.run();
-    if (scenes->parsed()) return list_scenes();
-    if (techniques->parsed()) return list_techniques();
+    if (scenes->parsed()) return scenes_md ? (std::printf("%s", scenes_markdown().c_str()), 0) : list_scenes();
+    if (techniques->parsed()) {
+      if (techniques->count("--markdown") == 0) return list_techniques();
+      std::printf("%s", (techniques_md == "parameters" ? parameters_markdown() : techniques_markdown()).c_str());
+      return 0;
+    }
+    if (views->parsed()) {
+      std::printf("%s", views_markdown().c_str());  // Markdown reads as plain text too
+      return 0;
+    }
   } catch (const InputError& e) {
     return input_error(e.what());
   } catch (const std::exception& e) {

@@ -29,6 +29,9 @@ struct ParamDesc {
   // resolves it each frame from the scene and the image size. NaN: no "auto".
   double auto_value = std::numeric_limits<double>::quiet_NaN();
   bool has_auto() const { return !std::isnan(auto_value); }
+  // Rows shared by several techniques name their table ("ray options", "denoiser"); a
+  // technique's own rows leave it empty. The docs summarise shared rows by group.
+  const char* group = "";
 };
 
 // `d`, also taking "auto" (stored as `sentinel`); the help sentence should say what auto is.

@@ -15,23 +15,47 @@ std::unique_ptr<Technique> make_reference_technique();
 std::unique_ptr<Technique> make_planar_technique();
 
 const std::vector<TechniqueInfo>& technique_registry() {
+  // The descriptions are the README's technique table (`ssrlab techniques --markdown`).
   static const std::vector<TechniqueInfo> registry = {
-      {"none", "no reflections: the composite shows the environment only", make_none_technique},
-      {"linear", "brute-force view-space linear march (Kim 2018, 2.3.1), optional depth interpolation",
+      {"none",
+       "no reflection work: the composite shows the environment",
+       make_none_technique},
+      {"linear",
+       "brute-force view-space march (Kim 2018 §2.3.1), optional depth interpolation [Val14]",
        make_linear_technique},
-      {"linear-binary", "Roberts: view-space linear march + binary search refinement, edge fade, optional Roberts blend",
+      {"linear-binary",
+       "Roberts: linear march + binary refinement, edge fade, optional Roberts blend",
        make_linear_binary_technique},
-      {"dda", "McGuire & Mara: perspective-correct per-pixel screen-space DDA with stride, jitter and refinement", make_dda_technique},
-      {"hiz", "Hi-Z: hierarchical depth-pyramid tracing (max = closest for reversed-Z) with an iteration cap", make_hiz_technique},
-      {"ppr", "Pixel-Projected Reflections: planar reflectors by projection (imageAtomicMin), hole patching",
+      {"dda",
+       "McGuire & Mara: perspective-correct per-pixel screen-space DDA, near-plane clipping, "
+       "stride, jitter, refinement",
+       make_dda_technique},
+      {"hiz",
+       "Hi-Z: a depth pyramid (max = closest, odd sizes handled) traversed hierarchically",
+       make_hiz_technique},
+      {"ppr",
+       "Pixel-Projected Reflections (Kim 2018 after Cichocki 2017): pixels projected across each "
+       "planar reflector with `imageAtomicMin` into an r32ui image, resolved with hole patching; "
+       "normal maps and GGX samples by reprojection; `fallback` (default `hiz`) traces the "
+       "reflective pixels projection cannot serve (non-planar surfaces, unfilled holes, "
+       "normal-mapped rays off the plane's solution), `none` is the thesis's technique",
        make_ppr_technique},
       {"stochastic",
-       "stochastic SSR (Diligent, FidelityFX SSSR): tile classification, 1 blue-noise GGX ray per pixel through Hi-Z, "
-       "spatial/temporal/bilateral denoiser",
+       "stochastic SSR as engines ship it (Diligent's document, AMD FidelityFX SSSR): tile "
+       "classification (roughness threshold, 1/2/4 rays per quad, half resolution) feeding an "
+       "indirect dispatch; one GGX VNDF ray per traced pixel from a spatio-temporal blue-noise "
+       "texture ssrlab makes itself (void-and-cluster, `core/blue_noise.h`), GGX bias, Hi-Z "
+       "trace, optional previous-frame hits; then the denoiser",
        make_stochastic_technique},
-      {"reference", "ground truth: Embree ray tracing of the true reflection rays, shaded with the lit pass's code",
+      {"reference",
+       "ground truth: Embree traces the true rays (GGX VNDF samples on rough pixels; glass "
+       "pixels refract with the tracers' single-interface model), the GPU shades the hits with "
+       "the lit pass's code, normal maps included; `bounces` N follows reflective hits N-1 more "
+       "times (1: a mirror seen in a mirror is black)",
        make_reference_technique, /*truth=*/true, /*on_demand=*/true},
-      {"planar", "planar-mirror oracle: the scene rendered from the camera mirrored across each reflector",
+      {"planar",
+       "the classic mirrored-camera render of each planar reflector: a second, independent "
+       "oracle",
        make_planar_technique},
   };
   return registry;

@@ -10,6 +10,7 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
   using D = shared::DenoiseParams;
   auto at = [offset](ParamDesc d, std::size_t field) {
     d.offset = offset + field;
+    d.group = "denoiser";
     return d;
   };
   std::vector<ParamDesc> t;

@@ -19,6 +19,7 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
   const std::size_t base = offsetof(P, ray);
   auto at = [base](ParamDesc d, std::size_t field) {
     d.offset = base + field;
+    d.group = "ray options";
     return d;
   };
   std::vector<ParamDesc> t(own);
@@ -39,10 +40,13 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
   t.push_back(at({"fresnel", ParamType::Bool, 0, 0, 1, 1, "",
                   "Roberts blend only: weight by Schlick Fresnel (the standard composite always applies it)."},
                  offsetof(R, fresnel)));
-  if (with_blend)
-    t.push_back(at({"blend", ParamType::Choice, 0, 0, 1, 1, "",
-                    "standard: lit + specular * mix(env, refl, conf); roberts: mix(lit, refl, metallic^3 * -ray.z * fade).",
-                    {"standard", "roberts"}}, offsetof(R, blend)));
+  if (with_blend) {  // linear-binary's own (only it offers the switch), though RayOptions holds it
+    ParamDesc blend = at({"blend", ParamType::Choice, 0, 0, 1, 1, "",
+                          "standard: lit + specular * mix(env, refl, conf); roberts: mix(lit, refl, metallic^3 * -ray.z * fade).",
+                          {"standard", "roberts"}}, offsetof(R, blend));
+    blend.group = "";
+    t.push_back(blend);
+  }
   t.push_back(at({"seed", ParamType::Int, 0, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."},
                  offsetof(R, seed)));
   t.push_back(at({"compact", ParamType::Bool, 0, 0, 1, 1, "",
