@@ -1,4 +1,4 @@
-// The main() every screen-space tracer shares. Before including it, a tracer declares
+// The pass every screen-space tracer shares (ssr_tracer_pass). Before including it, a tracer declares
 //   layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { XParams params; };
 // (with `RayOptions ray` as a member of XParams) and defines
 //   TraceResult trace_ray(ivec2 pixel, vec3 origin_vs, vec3 dir_vs, float jitter);
@@ -118,7 +118,8 @@ float reflect_pixel(ivec2 p) {
   return steps;
 }
 
-void main() {
+// The tracer pass: each tracer .comp defines trace_ray(), includes this, and its main() calls it.
+void ssr_tracer_pass() {
 #ifdef SSR_RAY_LIST
   uint i = gl_WorkGroupID.x * uint(RAY_LIST_GROUP) + gl_LocalInvocationIndex;
   bool inside = i < ray_header.count;

@@ -12,3 +12,5 @@ TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
 }
 
 #include "common/ssr_main.glsl"
+
+void main() { ssr_tracer_pass(); }

@@ -4,47 +4,10 @@
 
 layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { LinearBinaryParams params; };
 
-// Inside the surface seen at p's projection? (false off screen or behind the camera plane)
-bool sample_inside(vec3 p, bool backfaces, out vec2 uv) {
-  float depth;
-  if (!project_to_uv(p, uv, depth) || !uv_on_screen(uv)) return false;
-  return inside_surface(uv, p.z, params.thickness, backfaces);
-}
+#include "common/linear_binary_trace.glsl"
 
-TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
-  float near_z = -frame.clip.x;
-  bool backfaces = params.ray.backface_thickness != 0;
-  int n = max(params.linear_steps, 1);
-  float step = params.max_distance / float(n);
-  vec3 prev = origin;
-  bool prev_inside = true;  // a hit needs an outside sample first: no hit on the origin surface
-  for (int i = 1; i <= n; ++i) {
-    vec3 pos = origin + dir * (step * float(i));
-    if (pos.z > near_z) return trace_miss(float(i));
-    vec2 uv;
-    float depth;
-    if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
-    bool inside = inside_surface(uv, pos.z, params.thickness, backfaces);
-    if (inside && !prev_inside) {
-      // Bisection between the last outside sample (a) and the first inside one (b).
-      vec3 a = prev, b = pos;
-      vec2 b_uv = uv;
-      for (int k = 0; k < params.binary_steps; ++k) {
-        vec3 mid = 0.5 * (a + b);
-        vec2 mid_uv;
-        if (sample_inside(mid, backfaces, mid_uv)) {
-          b = mid;
-          b_uv = mid_uv;
-        } else {
-          a = mid;
-        }
-      }
-      return TraceResult(true, b_uv, float(i + params.binary_steps), length(b - origin));
-    }
-    prev = pos;
-    prev_inside = inside;
-  }
-  return trace_miss(float(n));
-}
+TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) { return linear_binary_trace(pixel, origin, dir, jitter); }
 
 #include "common/ssr_main.glsl"
+
+void main() { ssr_tracer_pass(); }

@@ -6,7 +6,6 @@
 #include "common/gbuffer.glsl"
 #include "common/ppr_mirror.glsl"
 #include "shared/ppr_packing.h"
-#include "shared/sampling.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { PprParams params; };
@@ -29,6 +28,8 @@ uint packed_at(ivec2 q) {
   return texelFetch(projected, q, 0).x;
 }
 
+#include "common/ppr_resolve.glsl"
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
@@ -39,74 +40,7 @@ void main() {
     imageStore(out_debug, p, vec4(0.0));
     return;
   }
-  // The source position (continuous pixel coordinates) this pixel reflects.
-  uint v = packed_at(p);
-  bool hole = ppr_is_empty(v);
-  vec2 source = vec2(p) + 0.5 + (hole ? vec2(0.0) : ppr_unpack(v, u_fraction_bits));
-  if (hole && params.hole_fill > 0) {
-    // Borrow a neighbour's source as it is. Moving it by the destination's step assumed the
-    // mirror keeps screen orientation and went the wrong way along the flipped axis. A borrowed
-    // source must also mirror back next to this pixel: otherwise this pixel's true reflection
-    // is something else (often the sky past an object's outline), and it stays a hole.
-    const ivec2 dirs[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),
-                                   ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
-    PprReflector r = reflectors[g.reflector - 1u];
-    int n = params.hole_fill == 1 ? 4 : 8;
-    for (int i = 0; i < n && hole; ++i) {
-      uint w = packed_at(p + dirs[i]);
-      if (ppr_is_empty(w)) continue;
-      vec2 borrowed = vec2(p + dirs[i]) + 0.5 + ppr_unpack(w, u_fraction_bits);
-      ivec2 b = clamp(ivec2(borrowed), ivec2(0), ivec2(frame.viewport.xy) - 1);
-      vec2 back;
-      if (!mirror_to_pixel(view_position(borrowed * frame.viewport.zw, texelFetch(g_depth, b, 0).r), r, back)) continue;
-      if (distance(back, vec2(p) + 0.5) > 1.5) continue;
-      source = borrowed;
-      hole = false;
-    }
-  }
-  if (hole) {
-    imageStore(out_reflection, p, unserved(p));
-    imageStore(out_debug, p, vec4(0.0, 0.0, 1.0, 1.0));
-    return;
-  }
-  vec2 src_uv = source * frame.viewport.zw;
-  vec3 color = textureLod(lit_tex, src_uv, 0.0).rgb;
-
-  float rough = params.roughness >= 0.0 ? params.roughness : g.roughness;
-  // A normal map tilts the G-buffer normal away from the reflector's plane.
-  vec3 plane_n = normalize(mat3(frame.view) * reflectors[g.reflector - 1u].plane.xyz);
-  bool bumpy = params.normal_maps != 0 && abs(dot(g.n_vs, plane_n)) < 0.99999;
-  bool perturbed = bumpy || rough >= 0.01;
-  if (perturbed) {
-    // Mirror solution: the reflected point and its distance from this pixel's surface point.
-    vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
-    float reach = length(hit_vs - g.pos_vs);
-    vec3 v_dir = -normalize(g.pos_vs);
-    int n = rough < 0.01 ? 1 : clamp(params.samples, 1, 16);
-    vec3 sum = vec3(0.0);
-    float found = 0.0;
-    for (int s = 0; s < n; ++s) {
-      vec3 dir = reflect(-v_dir, g.n_vs);  // the G-buffer normal carries the normal map
-      if (rough >= 0.01) {
-        vec3 l = sample_reflection(g.n_vs, v_dir, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(params.seed)));
-        if (dot(l, g.n_vs) > 0.0) dir = l;
-      }
-      vec2 uv;
-      float depth;
-      if (project_to_uv(g.pos_vs + dir * reach, uv, depth) && uv_on_screen(uv)) {
-        sum += textureLod(lit_tex, uv, 0.0).rgb;
-        found += 1.0;
-      }
-    }
-    if (found > 0.0) color = sum / found;
-    else if (u_fallback == 1) {  // the perturbed ray left the plane's solution
-      imageStore(out_reflection, p, unserved(p));
-      imageStore(out_debug, p, vec4(source - (vec2(p) + 0.5), ppr_is_empty(v) ? 1.0 : 0.0, 0.0));
-      return;
-    }
-  }
-  float a = 1.0;
-  if (params.edge_fade != 0) a *= clamp(1.0 - abs(src_uv.x - 0.5) - abs(src_uv.y - 0.5), 0.0, 1.0);
-  imageStore(out_reflection, p, vec4(color, a));
-  imageStore(out_debug, p, vec4(source - (vec2(p) + 0.5), ppr_is_empty(v) ? 1.0 : 0.0, 0.0));
+  PprResolved r = ppr_resolve(p, g);
+  imageStore(out_reflection, p, r.served ? r.reflection : unserved(p));
+  imageStore(out_debug, p, r.debug);
 }

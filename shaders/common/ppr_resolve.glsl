@@ -1,0 +1,85 @@
+// PPR's resolve (include-only): what one reflector pixel shows. The source position its packed
+// offset names (holes patched from the neighbours whose sources mirror back next to it), the lit
+// colour there, and with a normal-mapped or rough reflector the thesis's approximation: keep the
+// mirror solution's reflection distance, follow the perturbed (or GGX-sampled) reflection
+// vector that far, then reproject.
+//
+// The pass provides (techniques/ppr_resolve.comp): `params` (PprParams), `u_fraction_bits`,
+// `packed_at(q)` (the packed value at q, PPR_EMPTY off screen), `reflectors[]`, `lit_tex`.
+#include "shared/sampling.h"
+
+struct PprResolved {
+  bool served;      // false: projection has no answer here (the pass asks its fallback)
+  vec4 reflection;  // rgb radiance, a confidence
+  vec4 debug;       // offset to the source (px), hole before patching, hole after
+};
+
+// Borrows a neighbour's source as it is. Moving it by the destination's step assumed the mirror
+// keeps screen orientation and went the wrong way along the flipped axis. A borrowed source must
+// also mirror back next to this pixel: otherwise this pixel's true reflection is something else
+// (often the sky past an object's outline), and it stays a hole.
+bool ppr_patch_hole(ivec2 p, PprReflector r, inout vec2 source) {
+  const ivec2 dirs[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),
+                                 ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
+  int n = params.hole_fill == 1 ? 4 : 8;
+  for (int i = 0; i < n; ++i) {
+    uint w = packed_at(p + dirs[i]);
+    if (ppr_is_empty(w)) continue;
+    vec2 borrowed = vec2(p + dirs[i]) + 0.5 + ppr_unpack(w, u_fraction_bits);
+    ivec2 b = clamp(ivec2(borrowed), ivec2(0), ivec2(frame.viewport.xy) - 1);
+    vec2 back;
+    if (!mirror_to_pixel(view_position(borrowed * frame.viewport.zw, texelFetch(g_depth, b, 0).r), r, back)) continue;
+    if (distance(back, vec2(p) + 0.5) > 1.5) continue;
+    source = borrowed;
+    return true;
+  }
+  return false;
+}
+
+// The perturbed rays' mean radiance at the mirror solution's reach; false when every one left
+// the screen (the ray left the plane's solution).
+bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 color) {
+  vec2 src_uv = source * frame.viewport.zw;
+  vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
+  float reach = length(hit_vs - g.pos_vs);
+  vec3 v_dir = -normalize(g.pos_vs);
+  int n = rough < 0.01 ? 1 : clamp(params.samples, 1, 16);
+  vec3 sum = vec3(0.0);
+  float found = 0.0;
+  for (int s = 0; s < n; ++s) {
+    vec3 dir = reflect(-v_dir, g.n_vs);  // the G-buffer normal carries the normal map
+    if (rough >= 0.01) {
+      vec3 l = sample_reflection(g.n_vs, v_dir, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(params.seed)));
+      if (dot(l, g.n_vs) > 0.0) dir = l;
+    }
+    vec2 uv;
+    float depth;
+    if (project_to_uv(g.pos_vs + dir * reach, uv, depth) && uv_on_screen(uv)) {
+      sum += textureLod(lit_tex, uv, 0.0).rgb;
+      found += 1.0;
+    }
+  }
+  if (found > 0.0) color = sum / found;
+  return found > 0.0;
+}
+
+PprResolved ppr_resolve(ivec2 p, GSample g) {
+  // The source position (continuous pixel coordinates) this pixel reflects.
+  uint v = packed_at(p);
+  bool hole = ppr_is_empty(v);
+  vec2 source = vec2(p) + 0.5 + (hole ? vec2(0.0) : ppr_unpack(v, u_fraction_bits));
+  if (hole && params.hole_fill > 0) hole = !ppr_patch_hole(p, reflectors[g.reflector - 1u], source);
+  if (hole) return PprResolved(false, vec4(0.0), vec4(0.0, 0.0, 1.0, 1.0));
+  vec4 debug = vec4(source - (vec2(p) + 0.5), ppr_is_empty(v) ? 1.0 : 0.0, 0.0);
+  vec2 src_uv = source * frame.viewport.zw;
+  vec3 color = textureLod(lit_tex, src_uv, 0.0).rgb;
+  float rough = params.roughness >= 0.0 ? params.roughness : g.roughness;
+  // A normal map tilts the G-buffer normal away from the reflector's plane.
+  vec3 plane_n = normalize(mat3(frame.view) * reflectors[g.reflector - 1u].plane.xyz);
+  bool bumpy = params.normal_maps != 0 && abs(dot(g.n_vs, plane_n)) < 0.99999;
+  if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color) && u_fallback == 1)
+    return PprResolved(false, vec4(0.0), debug);
+  float a = 1.0;
+  if (params.edge_fade != 0) a *= clamp(1.0 - abs(src_uv.x - 0.5) - abs(src_uv.y - 0.5), 0.0, 1.0);
+  return PprResolved(true, vec4(color, a), debug);
+}
