@@ -65,10 +65,12 @@ int run_compare(const CompareOptions& o) {
   auto reference = create_technique("reference");
   apply_assignments(*reference, sets_for("reference", o.sets));
 
+  FrameSettings settings;
+  set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
   auto ctx = open_gl(o.gl, {{w, h}});
   const std::string clock = ctx->info().software ? "cpu" : "gpu";
   Renderer renderer(scene, w, h);
-  renderer.settings.exposure = o.exposure;
+  renderer.settings = settings;
   reference->load(renderer.shaders());
   TimingOptions timing{1, o.frames, ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
 
@@ -124,7 +126,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--out", o->out, "The labelled grid (.png).")->required();
   c->add_option("--json", o->json, "Results JSON (ARCHITECTURE §7).");
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--regions", o->regions,
                 "The breakdown's rows (implies --breakdown): all,planar,reflector:N,other,mirror,glossy,rough,refractive.");

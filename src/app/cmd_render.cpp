@@ -101,8 +101,8 @@ int run_render(const RenderOptions& o) {
   }
   auto reference = hits_view ? create_technique("reference") : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
-  if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20)
-    throw InputError("exposure must be in [-20, 20] stops.");
+  FrameSettings settings;
+  set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
   if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
     throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
   if (hits_view && technique_name == "reference")
@@ -111,7 +111,7 @@ int run_render(const RenderOptions& o) {
   auto ctx = open_gl(o.gl, {{w, h}});
   gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   Renderer renderer(scene, w, h, shaders);
-  renderer.settings.exposure = o.exposure;
+  renderer.settings = settings;
   // The telemetry views show what an instrumented build of the technique recorded.
   const bool telemetry_view = view_info(view).telemetry;
   technique->load(telemetry_view ? renderer.shaders().with_defines({"SSR_TELEMETRY"}) : renderer.shaders());
@@ -185,7 +185,7 @@ Command add_render_command(CLI::App& app) {
   std::string views;
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
   c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only)|hit-classes (a technique against the reference).")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping.")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");
   return {c, [o] { return run_render(*o); }};

@@ -91,6 +91,13 @@ struct FrameSettings {
   glm::vec4 clip_plane{0, 0, 0, 1};  // world plane; the G-buffer keeps dot(plane, (p,1)) >= 0
   bool operator==(const FrameSettings&) const = default;
 };
+// The settings a user sets (exposure, reflective_f0; the clip plane is the planar oracle's), as a
+// parameter table: the commands' --exposure, the viewer's panel, scripts and presets all check
+// and describe them through it (prefix "frame").
+std::span<const ParamDesc> frame_settings_table();
+ParamSet frame_settings_params(FrameSettings& settings);
+// Sets one ("exposure", ...) through the table: InputError naming the key and range.
+void set_frame_setting(FrameSettings& settings, const std::string& key, double value);
 
 // Everything a technique may read for one frame, and its outputs. The frame's inputs are bound
 // at their named slots when run() is called; rebind() restores them (after a technique drew with

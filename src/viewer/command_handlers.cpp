@@ -61,7 +61,7 @@ void Viewer::on_View(const std::string& a) {
   view_ = a == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(a));
 }
 
-void Viewer::on_Exposure(const std::string& a) { renderer_->settings.exposure = std::stof(a); }
+void Viewer::on_Exposure(const std::string& a) { set_frame_setting(renderer_->settings, "exposure", std::stod(a)); }
 void Viewer::on_Ambient(const std::string& a) { set_lighting(lights_, environment_, std::stof(a)); }
 void Viewer::on_Frames(const std::string& a) { frames_left_ = std::stoi(a); }
 void Viewer::on_Screenshot(const std::string& a) { save(a); }

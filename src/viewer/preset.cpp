@@ -242,7 +242,12 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0, 1.0);
   if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01, 1.0);
   if (j.contains("view")) p.view = r.one_of(j["view"], "view", viewer_view_names());
-  if (j.contains("exposure")) p.exposure = r.number(j["exposure"], "exposure", -20.0, 20.0);
+  if (j.contains("exposure")) {  // the range of the frame settings' own table
+    FrameSettings s;
+    const ParamSet frame = frame_settings_params(s);
+    const ParamDesc& e = frame.table()[static_cast<std::size_t>(frame.find("exposure"))];
+    p.exposure = r.number(j["exposure"], "exposure", e.min, e.max);
+  }
   if (j.contains("lights")) {
     const json& l = j["lights"];
     if (!l.is_array()) r.fail_at("lights", "must be an array");

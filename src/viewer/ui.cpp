@@ -72,7 +72,7 @@ ImU32 colour(float r, float g, float b, float a = 1.0f) { return ImGui::ColorCon
 // Room for the longest parameter name of any technique next to its widget.
 float label_width() {
   static const float w = [] {
-    float m = ImGui::CalcTextSize("exposure (stops)").x;
+    float m = ImGui::CalcTextSize("reflective_f0").x;
     for (const TechniqueInfo& t : technique_registry()) {
       auto tech = t.create();
       ParamSet p = tech->params();
@@ -478,7 +478,8 @@ void Viewer::view_panel() {
       ImGui::TextDisabled(mask_key_.empty() ? "not computed" : "stale");
     } else ImGui::TextDisabled("traceable mask up to date");
   }
-  ImGui::SliderFloat("exposure (stops)", &renderer_->settings.exposure, -8.0f, 8.0f, "%.2f");
+  ParamSet frame = frame_settings_params(renderer_->settings);  // exposure, reflective_f0: one table
+  draw_param_panel(frame);
   bool magnify = magnifier_ > 0;
   if (ImGui::Checkbox("magnifier (M)", &magnify)) magnifier_ = magnify ? 8 : 0;
   if (magnify) {

@@ -171,7 +171,7 @@ ViewerPreset Viewer::capture_preset() const {
   p.split = std::clamp(split_, 0.0f, 1.0f);  // Ctrl+click on a slider can type beyond its range
   p.diff_scale = std::clamp(diff_scale_, 0.01f, 1.0f);
   p.view = viewer_view_names()[static_cast<std::size_t>(view_)];
-  p.exposure = std::clamp(renderer_->settings.exposure, -20.0f, 20.0f);
+  p.exposure = renderer_->settings.exposure;  // kept in the table's range by every path that sets it
   p.lights = lights_;
   p.environment = environment_;
   p.ambient = ambient_;
@@ -199,7 +199,7 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   split_ = p.split;
   diff_scale_ = p.diff_scale;
   view_ = view;
-  renderer_->settings.exposure = p.exposure;
+  set_frame_setting(renderer_->settings, "exposure", p.exposure);
 }
 
 void Viewer::save(const std::string& path) {
