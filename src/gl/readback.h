@@ -3,6 +3,7 @@
 // keep row 0 at the top.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -33,6 +34,16 @@ std::vector<T> read_texture(const Texture2D& tex, GLenum format, GLenum type, in
   glGetTextureImage(tex.id(), 0, format, type, static_cast<GLsizei>(px.size() * sizeof(T)), px.data());
   if (rows == Rows::TopFirst) flip_rows(px, tex.width(), tex.height(), channels);
   return px;
+}
+
+// One pixel of level 0: (x, y) with row 0 at the top, as read-back images have it; N values.
+template <class T, int N>
+std::array<T, N> read_texel(const Texture2D& tex, int x, int y, GLenum format, GLenum type) {
+  std::array<T, N> v{};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureSubImage(tex.id(), 0, x, tex.height() - 1 - y, 0, 1, 1, 1, format, type, static_cast<GLsizei>(sizeof v),
+                       v.data());
+  return v;
 }
 
 }  // namespace ssr::gl

@@ -4,21 +4,13 @@
 #include <cmath>
 
 #include "gl/gl.h"
+#include "gl/readback.h"
 #include "shared/bindings.h"
 #include "shared/tonemap.h"
 
 namespace ssr {
 
 namespace {
-
-// One texel (row 0 at the top of the image: GL rows go up).
-template <class T, int N>
-std::array<T, N> texel(const gl::Texture2D& tex, int x, int y, GLenum format, GLenum type) {
-  std::array<T, N> v{};
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureSubImage(tex.id(), 0, x, tex.height() - 1 - y, 0, 1, 1, 1, format, type, static_cast<GLsizei>(sizeof v), v.data());
-  return v;
-}
 
 nlohmann::json vec(const float* v, int n) {
   nlohmann::json a = nlohmann::json::array();
@@ -45,20 +37,20 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   const GBuffer& g = r.gbuffer();
   nlohmann::json j;
   j["pixel"] = {x, y};
-  const float depth = texel<float, 1>(g.depth, x, y, GL_DEPTH_COMPONENT, GL_FLOAT)[0];
+  const float depth = gl::read_texel<float, 1>(g.depth, x, y, GL_DEPTH_COMPONENT, GL_FLOAT)[0];
   j["depth"] = depth;
   // View-space position from the pixel and the reversed-Z depth (the inverse projection).
   const float w = static_cast<float>(g.depth.width()), h = static_cast<float>(g.depth.height());
   const glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, 1.0f - (y + 0.5f) / h * 2.0f, depth, 1.0f);
   const glm::vec4 view = glm::inverse(r.matrices().proj) * ndc;
   j["view_depth"] = depth > 0.0f ? nlohmann::json(-view.z / view.w) : nlohmann::json(nullptr);  // 0: the sky
-  const auto nr = texel<float, 4>(g.normal_roughness, x, y, GL_RGBA, GL_FLOAT);
+  const auto nr = gl::read_texel<float, 4>(g.normal_roughness, x, y, GL_RGBA, GL_FLOAT);
   j["normal"] = vec(nr.data(), 3);
   j["roughness"] = nr[3];
-  const auto am = texel<std::uint8_t, 4>(g.albedo_metallic, x, y, GL_RGBA, GL_UNSIGNED_BYTE);
+  const auto am = gl::read_texel<std::uint8_t, 4>(g.albedo_metallic, x, y, GL_RGBA, GL_UNSIGNED_BYTE);
   j["albedo"] = {am[0] / 255.0, am[1] / 255.0, am[2] / 255.0};
   j["metallic"] = am[3] / 255.0;
-  const auto m = texel<std::uint16_t, 4>(g.material, x, y, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT);
+  const auto m = gl::read_texel<std::uint16_t, 4>(g.material, x, y, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT);
   j["reflector"] = m[0];
   j["reflectance"] = m[1] / 255.0;
   j["flags"] = m[2];
@@ -72,12 +64,12 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
     const SideImages& s = sides[i];
     nlohmann::json k;
     k["technique"] = s.technique;
-    const auto c = texel<float, 4>(*s.color, x, y, GL_RGBA, GL_FLOAT);
+    const auto c = gl::read_texel<float, 4>(*s.color, x, y, GL_RGBA, GL_FLOAT);
     k["colour"] = vec(c.data(), 3);
-    shown[i] = texel<std::uint8_t, 4>(*s.display, x, y, GL_RGBA, GL_UNSIGNED_BYTE);
+    shown[i] = gl::read_texel<std::uint8_t, 4>(*s.display, x, y, GL_RGBA, GL_UNSIGNED_BYTE);
     k["display"] = {shown[i][0], shown[i][1], shown[i][2]};
     if (s.debug) {
-      const auto d = texel<float, 4>(*s.debug, x, y, GL_RGBA, GL_FLOAT);
+      const auto d = gl::read_texel<float, 4>(*s.debug, x, y, GL_RGBA, GL_FLOAT);
       if (s.ppr_offsets) k["offset"] = vec(d.data(), 2);
       else {
         k["steps"] = d[0];
@@ -89,10 +81,10 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   }
   if (truth && *truth < n_sides) {
     // The error against the truth as the figures take it: display values of the final colour.
-    const auto tc = texel<float, 4>(*sides[*truth].color, x, y, GL_RGBA, GL_FLOAT);
+    const auto tc = gl::read_texel<float, 4>(*sides[*truth].color, x, y, GL_RGBA, GL_FLOAT);
     const glm::vec3 t = shared::display_transform(glm::vec3(tc[0], tc[1], tc[2]), r.settings.exposure);
     for (int i = 0; i < n_sides; ++i) {
-      const auto c = texel<float, 4>(*sides[i].color, x, y, GL_RGBA, GL_FLOAT);
+      const auto c = gl::read_texel<float, 4>(*sides[i].color, x, y, GL_RGBA, GL_FLOAT);
       const glm::vec3 v = shared::display_transform(glm::vec3(c[0], c[1], c[2]), r.settings.exposure);
       const glm::vec3 d = glm::abs(v - t);
       j[side_key(i)]["error"] = (d.x + d.y + d.z) / 3.0f;
