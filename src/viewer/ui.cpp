@@ -69,7 +69,7 @@ bool combo(const char* label, int* current, const std::vector<std::string>& item
 
 ImU32 colour(float r, float g, float b, float a = 1.0f) { return ImGui::ColorConvertFloat4ToU32(ImVec4(r, g, b, a)); }
 
-// Room for the longest parameter name of any technique next to its widget.
+// Room for the longest parameter name of any technique next to its widget, and its reset button.
 float label_width() {
   static const float w = [] {
     float m = ImGui::CalcTextSize("reflective_f0").x;
@@ -80,7 +80,8 @@ float label_width() {
     }
     return m;
   }();
-  return w + ImGui::GetStyle().ItemInnerSpacing.x + 4.0f;
+  const ImGuiStyle& st = ImGui::GetStyle();
+  return w + st.ItemInnerSpacing.x + st.ItemSpacing.x + ImGui::CalcTextSize("reset").x + 2.0f * st.FramePadding.x + 4.0f;
 }
 
 constexpr ImGuiWindowFlags kFixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
