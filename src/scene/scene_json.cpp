@@ -65,6 +65,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/json_reader.h"
 #include "scene/meshgen.h"
 #include "scene/scene_json.h"
 #include "scene/scene_io.h"
@@ -80,196 +81,8 @@ using json = nlohmann::json;
 
 constexpr std::uintmax_t kMaxJsonBytes = 16ull << 20;  // 16 MiB
 
-// Reading one JSON scene file: typed getters that name the file and the key on every error.
-class JsonReader {
- public:
-  explicit JsonReader(fs::path file) : file_(std::move(file)), label_("scene file " + q(file_)) {}
-  // Files that embed scene-file pieces (viewer presets) start the messages with their own label.
-  JsonReader(fs::path file, std::string label) : file_(std::move(file)), label_(std::move(label)) {}
-  const fs::path& file() const { return file_; }
-
-  [[noreturn]] void fail_at(const std::string& where, const std::string& what) const {
-    fail(label_ + ": " + q(where) + " " + what);
-  }
-
-  static std::string join(const std::string& parent, const std::string& key) {
-    return parent.empty() ? key : parent + "." + key;
-  }
-  static std::string index(const std::string& parent, std::size_t i) {
-    return parent + "[" + std::to_string(i) + "]";
-  }
-
-  const json& object(const json& j, const std::string& where) const {
-    if (!j.is_object()) fail_at(where, "must be an object");
-    return j;
-  }
-  const json& array(const json& j, const std::string& where) const {
-    if (!j.is_array()) fail_at(where, "must be an array");
-    return j;
-  }
-
-  // Every key of `obj` must be in `allowed`; `for_what` (e.g. " for a box") ends the key's name
-  // in the message.
-  void keys(const json& obj, const std::string& where, const std::vector<std::string_view>& allowed,
-            const std::string& for_what = "") const {
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-      if (std::find(allowed.begin(), allowed.end(), it.key()) != allowed.end()) continue;
-      std::string list;
-      for (std::string_view a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
-      fail(label_ + ": unknown key " + q(join(where, it.key())) + for_what +
-           " (allowed here: " + list + ")");
-    }
-  }
-
-  float number(const json& j, const std::string& where, float lo, float hi) const {
-    if (!j.is_number()) fail_at(where, "must be a number");
-    const double v = j.get<double>();
-    if (!std::isfinite(v) || std::abs(v) > 3.0e38) fail_at(where, "must be a finite number");
-    if (v < lo || v > hi)
-      fail_at(where, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], not " + fmt(v));
-    return static_cast<float>(v);
-  }
-  float number(const json& obj, const std::string& parent, const char* key, float def, float lo,
-               float hi) const {
-    return obj.contains(key) ? number(obj[key], join(parent, key), lo, hi) : def;
-  }
-  int integer(const json& obj, const std::string& parent, const char* key, int def, int lo,
-              int hi) const {
-    if (!obj.contains(key)) return def;
-    const std::string where = join(parent, key);
-    if (!obj[key].is_number_integer()) fail_at(where, "must be an integer");
-    const auto v = obj[key].get<long long>();
-    if (v < lo || v > hi)
-      fail_at(where, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return static_cast<int>(v);
-  }
-  glm::vec3 vec3(const json& j, const std::string& where, float lo = -1e7f, float hi = 1e7f) const {
-    if (!j.is_array() || j.size() != 3) fail_at(where, "must be an array of 3 numbers");
-    glm::vec3 v;
-    for (int i = 0; i < 3; ++i) {
-      if (!j[static_cast<std::size_t>(i)].is_number())
-        fail_at(where, "must be an array of 3 numbers");
-      v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
-    }
-    return v;
-  }
-  glm::vec3 vec3(const json& obj, const std::string& parent, const char* key, glm::vec3 def,
-                 float lo = -1e7f, float hi = 1e7f) const {
-    return obj.contains(key) ? vec3(obj[key], join(parent, key), lo, hi) : def;
-  }
-  glm::vec3 required_vec3(const json& obj, const std::string& parent, const char* key) const {
-    if (!obj.contains(key)) fail_at(join(parent, key), "is required");
-    return vec3(obj[key], join(parent, key));
-  }
-  glm::vec2 vec2(const json& j, const std::string& where, float lo, float hi) const {
-    if (!j.is_array() || j.size() != 2) fail_at(where, "must be an array of 2 numbers");
-    glm::vec2 v;
-    for (int i = 0; i < 2; ++i) {
-      if (!j[static_cast<std::size_t>(i)].is_number())
-        fail_at(where, "must be an array of 2 numbers");
-      v[i] = number(j[static_cast<std::size_t>(i)], where, lo, hi);
-    }
-    return v;
-  }
-  std::string string(const json& j, const std::string& where) const {
-    if (!j.is_string()) fail_at(where, "must be a string");
-    std::string s = j.get<std::string>();
-    if (s.empty()) fail_at(where, "must not be empty");
-    return s;
-  }
-  std::string string(const json& obj, const std::string& parent, const char* key,
-                     const std::string& def) const {
-    return obj.contains(key) ? string(obj[key], join(parent, key)) : def;
-  }
-  bool boolean(const json& obj, const std::string& parent, const char* key, bool def) const {
-    if (!obj.contains(key)) return def;
-    if (!obj[key].is_boolean()) fail_at(join(parent, key), "must be true or false");
-    return obj[key].get<bool>();
-  }
-  // A unit vector from a non-zero one.
-  glm::vec3 direction(const json& j, const std::string& where) const {
-    const glm::vec3 v = vec3(j, where);
-    const float len = glm::length(v);
-    if (!(len > 1e-6f) || !std::isfinite(len)) fail_at(where, "must be a non-zero vector");
-    return v / len;
-  }
-
-  static std::string fmt(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-  }
-
- private:
-  fs::path file_;
-  std::string label_;  // starts every message
-};
-
-// Finds the first duplicate key (nlohmann keeps the last one silently) in a SAX pass of its own:
-// nlohmann 3.11.2's parse() with a callback rescans the enclosing array after every object,
-// quadratic in the array's length (a 3 MB file of boxes ran for over 10 minutes; found while
-// fuzzing).
-struct DuplicateKeyFinder : nlohmann::json_sax<json> {
-  std::vector<std::set<std::string>> seen;  // the keys of each open object
-  std::string duplicate;
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override {
-    seen.emplace_back();
-    return true;
-  }
-  bool key(string_t& k) override {
-    if (!seen.back().insert(k).second) duplicate = k;
-    return duplicate.empty();  // stops at the first one
-  }
-  bool end_object() override {
-    seen.pop_back();
-    return true;
-  }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
-    return false;
-  }
-};
-
-json parse_json_text(const std::string& text, const std::string& label) {
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail(label + " is empty");
-  json j;
-  std::string duplicate;
-  try {
-    j = json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
-    DuplicateKeyFinder finder;  // only after a successful parse: no errors left to report
-    json::sax_parse(text, &finder, json::input_format_t::json, /*strict=*/true,
-                    /*ignore_comments=*/true);
-    duplicate = finder.duplicate;
-  } catch (const json::parse_error& e) {
-    const std::string what = e.what();
-    static const std::regex re(R"(at line (\d+), column (\d+): (.*)$)");
-    std::smatch m;
-    if (std::regex_search(what, m, re))
-      fail(label + " has a JSON syntax error at line " + m[1].str() +
-           ", column " + (m[2].str() == "0" ? std::string("1") : m[2].str()) + ": " + m[3].str());
-    fail(label + " has a JSON syntax error near byte " + std::to_string(e.byte));
-  } catch (const json::exception& e) {
-    // Not a parse_error but still bad input: a number beyond double's range throws
-    // out_of_range.406 (found by fuzzing). Drop the "[json.exception.*] " prefix.
-    std::string what = e.what();
-    if (const std::size_t end = what.find("] "); end != std::string::npos) what.erase(0, end + 2);
-    fail(label + " cannot be read: " + what);
-  }
-  if (!duplicate.empty()) fail(label + " has the key " + q(duplicate) + " twice");
-  if (!j.is_object()) fail(label + " must hold a JSON object");
-  return j;
-}
-
 json parse_json_file(const fs::path& path) {
-  return parse_json_text(read_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
+  return parse_json_object(read_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
 }
 
 // "scale": a number or a v3, > 0 (1 when absent).
@@ -752,7 +565,7 @@ void read_animation(const JsonReader& r, const json& j, Scene& s) {
 
 Scene load_scene_json(const fs::path& path) {
   const json j = parse_json_file(path);
-  const JsonReader r(path);
+  const JsonReader r("scene file " + q(path), path);
   const fs::path dir = directory_of(path);
   r.keys(j, "",
          {"name", "description", "ambient", "environment", "materials", "meshes", "primitives",
@@ -789,22 +602,22 @@ Scene load_scene_json(const fs::path& path) {
 namespace scene_json {
 
 json parse(const std::string& text, const std::string& label) {
-  return parse_json_text(text, label);
+  return parse_json_object(text, label);
 }
 
 Light read_light(const json& j, const std::string& label, const std::string& where) {
-  return ::ssr::read_light(JsonReader("", label), j, where);
+  return ::ssr::read_light(JsonReader(label), j, where);
 }
 
 Environment read_environment(const json& j, const std::string& label, const std::string& where) {
   Environment env;
-  ::ssr::read_environment(JsonReader("", label), j, env, where);
+  ::ssr::read_environment(JsonReader(label), j, env, where);
   return env;
 }
 
 Camera read_camera(const json& j, const std::string& label, const std::string& where,
                    const std::string& default_name) {
-  return ::ssr::read_camera(JsonReader("", label), j, where, default_name);
+  return ::ssr::read_camera(JsonReader(label), j, where, default_name);
 }
 
 double json_float(float v) {

@@ -1,5 +1,6 @@
 #include "viewer/preset.h"
 
+#include "core/json_reader.h"
 #include "viewer/commands.h"
 
 #include <algorithm>
@@ -39,12 +40,6 @@ using files::q;
 
 constexpr std::uintmax_t kMaxPresetBytes = 1u << 20;
 
-std::string join_names(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
 // A captured value as JSON, typed as param_value_json types it (number, true/false, or a
 // choice's name as a string).
 ojson value_json(const std::string& text) {
@@ -58,51 +53,8 @@ ojson value_json(const std::string& text) {
   return text;
 }
 
-// The typed getters of one preset: every message starts with `where` and names the key.
-struct Reader {
-  const std::string& where;
-
-  [[noreturn]] void fail_at(const std::string& key, const std::string& what) const {
-    fail(where + ": " + q(key) + " " + what);
-  }
-  void keys(const json& obj, const std::string& parent, const std::vector<std::string>& allowed) const {
-    for (auto it = obj.begin(); it != obj.end(); ++it)
-      if (std::find(allowed.begin(), allowed.end(), it.key()) == allowed.end())
-        fail(where + ": unknown key " + q(parent.empty() ? it.key() : parent + "." + it.key()) +
-             " (allowed here: " + join_names(allowed) + ")");
-  }
-  const json& object(const json& j, const std::string& key) const {
-    if (!j.is_object()) fail_at(key, "must be an object");
-    return j;
-  }
-  float number(const json& j, const std::string& key, double lo, double hi) const {
-    if (!j.is_number()) fail_at(key, "must be a number");
-    const double v = j.get<double>();
-    auto fmt = [](double x) {
-      std::ostringstream o;
-      o << x;
-      return o.str();
-    };
-    if (!std::isfinite(v)) fail_at(key, "must be a finite number");
-    if (v < lo || v > hi) fail_at(key, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], not " + fmt(v));
-    return static_cast<float>(v);
-  }
-  std::string string(const json& j, const std::string& key) const {
-    if (!j.is_string()) fail_at(key, "must be a string");
-    std::string s = j.get<std::string>();
-    if (s.empty()) fail_at(key, "must not be empty");
-    return s;
-  }
-  std::string one_of(const json& j, const std::string& key, const std::vector<std::string>& names) const {
-    const std::string s = string(j, key);
-    if (std::find(names.begin(), names.end(), s) == names.end())
-      fail_at(key, "must be one of " + join_names(names) + ", not " + q(s));
-    return s;
-  }
-};
-
 // {"name": ..., "params": {...}} -> name and "name=value" list, checked on a fresh instance.
-void read_technique(const Reader& r, const json& j, const std::string& key, std::string& name,
+void read_technique(const JsonReader& r, const json& j, const std::string& key, std::string& name,
                     std::vector<std::string>& params) {
   r.object(j, key);
   r.keys(j, key, {"name", "params"});
@@ -128,7 +80,7 @@ void read_technique(const Reader& r, const json& j, const std::string& key, std:
   try {
     apply_params(*technique, params);
   } catch (const InputError& e) {
-    fail(r.where + ": " + q(key + ".params") + ": " + e.what());
+    fail(r.label() + ": " + q(key + ".params") + ": " + e.what());
   }
   // In table order (JSON objects are read sorted by key), as capture_params lists them.
   const ParamSet table = technique->params();
@@ -215,8 +167,8 @@ std::string preset_to_json_text(const ViewerPreset& p) {
 }
 
 ViewerPreset preset_from_json_text(const std::string& text, const std::string& where) {
-  const json j = scene_json::parse(text, where);
-  const Reader r{where};
+  const json j = parse_json_object(text, where);
+  const JsonReader r(where);
   r.keys(j, "", {"version", "scene", "camera", "technique_a", "technique_b", "compare", "split",
                  "diff_scale", "view", "exposure", "lights", "environment", "ambient"});
   if (!j.contains("version")) r.fail_at("version", "is required");
@@ -239,14 +191,14 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   if (j.contains("technique_b"))
     read_technique(r, j["technique_b"], "technique_b", p.technique_b, p.params_b);
   if (j.contains("compare")) p.compare = r.one_of(j["compare"], "compare", compare_mode_names());
-  if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0, 1.0);
-  if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01, 1.0);
+  if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0f, 1.0f);
+  if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01f, 1.0f);
   if (j.contains("view")) p.view = r.one_of(j["view"], "view", viewer_view_names());
   if (j.contains("exposure")) {  // the range of the frame settings' own table
     FrameSettings s;
     const ParamSet frame = frame_settings_params(s);
     const ParamDesc& e = frame.table()[static_cast<std::size_t>(frame.find("exposure"))];
-    p.exposure = r.number(j["exposure"], "exposure", e.min, e.max);
+    p.exposure = r.number(j["exposure"], "exposure", static_cast<float>(e.min), static_cast<float>(e.max));
   }
   if (j.contains("lights")) {
     const json& l = j["lights"];
@@ -260,7 +212,7 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   }
   if (j.contains("environment"))
     p.environment = scene_json::read_environment(j["environment"], where, "environment");
-  if (j.contains("ambient")) p.ambient = r.number(j["ambient"], "ambient", 0.0, 1e6);
+  if (j.contains("ambient")) p.ambient = r.number(j["ambient"], "ambient", 0.0f, 1e6f);
   return p;
 }
 
