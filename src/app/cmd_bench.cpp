@@ -172,10 +172,10 @@ int run_bench(const BenchOptions& o) {
                        std::to_string(kMaxListed) + " supported.");
   std::vector<Scene> scenes;
   for (const std::string& s : scene_names) scenes.push_back(load_scene(s));
-  const std::vector<std::string> names = technique_names(o.techniques, {"planar"});
+  const std::vector<std::string> names = technique_names(o.techniques, oracle_names());
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
-  auto reference = create_technique("reference");
-  apply_assignments(*reference, sets_for("reference", o.sets));
+  auto reference = create_technique(truth_name());
+  apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
   auto ctx = open_gl(o.gl, sizes);
   const gl::ContextInfo& gi = ctx->info();
@@ -206,7 +206,7 @@ int run_bench(const BenchOptions& o) {
         progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
         EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing, floor_ms);
         run.results.push_back(ev.result);
-        if (v.technique == "planar" && !run.oracles) run.oracles = oracle_agreement(*frame, ev.score);
+        if (technique_info(v.technique).oracle && !run.oracles) run.oracles = oracle_agreement(*frame, ev.score);
         ++done;
       }
       progress(done, total, "");

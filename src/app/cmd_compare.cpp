@@ -62,8 +62,8 @@ int run_compare(const CompareOptions& o) {
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   const std::vector<std::string> names = technique_names(o.techniques);
   const std::vector<Variant> variants = build_variants(names, o.sets, {}, o.presets);
-  auto reference = create_technique("reference");
-  apply_assignments(*reference, sets_for("reference", o.sets));
+  auto reference = create_technique(truth_name());
+  apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
   FrameSettings settings;
   set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
@@ -95,7 +95,7 @@ int run_compare(const CompareOptions& o) {
                       heat_map(ev.score.display, frame.truth(), frame.classes())});
     run.results.push_back(ev.result);
     // The two oracles check each other (ARCHITECTURE §5) wherever planar runs.
-    if (v.technique == "planar" && !run.oracles) run.oracles = oracle_agreement(frame, ev.score);
+    if (technique_info(v.technique).oracle && !run.oracles) run.oracles = oracle_agreement(frame, ev.score);
   }
   std::vector<GridTile> tiles = top;
   tiles.insert(tiles.end(), bottom.begin(), bottom.end());

@@ -67,7 +67,7 @@ int run_render(const RenderOptions& o) {
   // scores the technique against it: correct / false / missed hits.
   const bool classes_view = o.view == "classes";
   const bool hits_view = o.view == "hit-classes";
-  if (classes_view && o.technique != "reference")
+  if (classes_view && !technique_info(o.technique).truth)
     throw InputError("--view classes needs --technique reference.");
   if ((classes_view || hits_view) && format != ImageFormat::Png)
     throw InputError("--view " + o.view + " writes a .png.");
@@ -82,7 +82,7 @@ int run_render(const RenderOptions& o) {
     sets.insert(sets.begin(), p.assignments.begin(), p.assignments.end());
   }
   // hit-classes runs the reference too: reference.* assignments are its.
-  const std::vector<std::string> reference_sets = hits_view ? sets_for("reference", sets) : std::vector<std::string>{};
+  const std::vector<std::string> reference_sets = hits_view ? sets_for(truth_name(), sets) : std::vector<std::string>{};
   if (hits_view)
     sets.erase(std::remove_if(sets.begin(), sets.end(), [](const std::string& s) {
                  return s.rfind("reference.", 0) == 0;
@@ -99,13 +99,13 @@ int run_render(const RenderOptions& o) {
                        (fills.empty() ? std::string("it fills no debug view") : "its debug views: " + fills) + ").");
     }
   }
-  auto reference = hits_view ? create_technique("reference") : nullptr;
+  auto reference = hits_view ? create_technique(truth_name()) : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
   FrameSettings settings;
   set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
   if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
     throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
-  if (hits_view && technique_name == "reference")
+  if (hits_view && technique_info(technique_name).truth)
     throw InputError("--view hit-classes scores a technique against the reference; name another technique.");
 
   auto ctx = open_gl(o.gl, {{w, h}});

@@ -78,8 +78,8 @@ int run_sequence_command(const SequenceOptions& o) {
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
   std::vector<std::string> labels;
   for (const Variant& v : variants) labels.push_back(v.label());
-  auto reference = create_technique("reference");
-  apply_assignments(*reference, sets_for("reference", o.sets));
+  auto reference = create_technique(truth_name());
+  apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
   // The video's frame size is the composition's; the writer checks ffmpeg and the path now.
   std::optional<VideoWriter> video;

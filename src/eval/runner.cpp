@@ -96,7 +96,7 @@ ReferenceImages ScoredFrame::references(int samples) {
   if (it == ideal_at_samples_.end()) {
     // The same reference with `samples` rays a rough pixel and another seed, so that its
     // samples are independent of the converged ideal's.
-    auto ref = create_technique("reference");
+    auto ref = create_technique(truth_name());
     ParamSet from = reference_.params(), to = ref->params();
     for (std::size_t i = 0; i < from.size(); ++i) to.set(i, from.get(i));
     to.set(static_cast<std::size_t>(to.find("samples")), samples);

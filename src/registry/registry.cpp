@@ -56,7 +56,7 @@ const std::vector<TechniqueInfo>& technique_registry() {
       {"planar",
        "the classic mirrored-camera render of each planar reflector: a second, independent "
        "oracle",
-       make_planar_technique},
+       make_planar_technique, /*truth=*/false, /*on_demand=*/false, /*oracle=*/true},
   };
   return registry;
 }
@@ -71,5 +71,21 @@ const TechniqueInfo& technique_info(const std::string& name) {
 }
 
 std::unique_ptr<Technique> create_technique(const std::string& name) { return technique_info(name).create(); }
+
+std::vector<std::string> oracle_names() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& t : technique_registry())
+    if (t.oracle) names.push_back(t.name);
+  return names;
+}
+
+const std::string& truth_name() {
+  static const std::string name = [] {
+    for (const TechniqueInfo& t : technique_registry())
+      if (t.truth) return t.name;
+    return std::string();
+  }();
+  return name;
+}
 
 }  // namespace ssr

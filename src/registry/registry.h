@@ -17,6 +17,7 @@ struct TechniqueInfo {
   // What kind of technique it is: flags that the commands and the viewer read, never names.
   bool truth = false;      // the ground truth every score is taken against: never in "all", never swept
   bool on_demand = false;  // too slow for every frame (CPU ray tracing): the viewer runs it when asked
+  bool oracle = false;     // an independent oracle (mirrored cameras): reported as agreement with the truth
 };
 
 // Every technique, in the order `ssrlab techniques` lists them.
@@ -25,5 +26,9 @@ const std::vector<TechniqueInfo>& technique_registry();
 const TechniqueInfo& technique_info(const std::string& name);
 // Creates the named technique; throws InputError listing the known names.
 std::unique_ptr<Technique> create_technique(const std::string& name);
+// The technique every score is taken against (the one flagged `truth`).
+const std::string& truth_name();
+// The oracles' names (bench leaves them out of its default list: they have no speed to compare).
+std::vector<std::string> oracle_names();
 
 }  // namespace ssr

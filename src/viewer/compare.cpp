@@ -118,7 +118,7 @@ void Viewer::update_traceable_mask() {
   if (mask_key_ == key || !(mask_request_ || scripted_)) return;
   mask_request_ = false;
   if (!mask_ref_) {
-    mask_ref_ = create_technique("reference");
+    mask_ref_ = create_technique(truth_name());
     mask_ref_->load(renderer_->shaders());
     set_reference_progress(*mask_ref_, [this](double f) { draw_progress("traceable mask", f); });
   }
