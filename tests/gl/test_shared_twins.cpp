@@ -1,7 +1,8 @@
 // The shared headers with functions, compiled as GLSL, agree with their C++ twins over a buffer
 // of inputs: sampling.h (hash and random numbers bit for bit; the GGX VNDF sample, the basis and
 // the reflection within float rounding), tonemap.h (the display transform) and colormap.h (the
-// heat map, hue and category colours the views and the legends draw with). ppr_packing.h
+// heat map, hue and category colours the views and the legends draw with); classification.h's
+// and telemetry.h's integer helpers bit for bit. ppr_packing.h
 // has its own bit-exact test (test_ppr_packing.cpp).
 #include <gtest/gtest.h>
 
@@ -18,7 +19,9 @@
 #include "gl_test_env.h"
 #include "shared/sampling.h"
 #include "shared/tonemap.h"
+#include "shared/classification.h"
 #include "shared/colormap.h"
+#include "shared/telemetry.h"
 
 using namespace ssr;
 namespace sh = ssr::shared;
@@ -192,4 +195,74 @@ TEST(SharedTwins, SamplingTonemapAndColormapGlslMatchCpp) {
   EXPECT_EQ(swatches, 0.0f);  // constants chosen by branches: exact
   EXPECT_LE(display, 1e-4f);
   test::expect_no_gl_errors();
+}
+
+// The integer helpers of classification.h (the quad rotation, the ray list's texel packing) and
+// telemetry.h (the per-pixel word) agree bit for bit; the idle share's float exactly.
+struct IntCase {
+  glm::ivec4 p;   // pixel x, y, frame index, rays per quad (1, 2, 4)
+  glm::vec4 idle; // x: an idle share (some outside [0, 1]); y: iterations (as a float)
+};
+struct IntResult {
+  glm::ivec4 quad;    // quad_offset(frame).xy, quad_traces(p, frame, rays), 0
+  glm::uvec4 texel;   // pack_texel(p.xy), unpack_texel(..).xy, telemetry_pack(iterations, idle)
+  glm::vec4 word;     // telemetry_iterations(word) (as float), telemetry_idle(word)
+};
+static_assert(sizeof(IntCase) == 32 && sizeof(IntResult) == 48);
+
+TEST(SharedTwins, ClassificationAndTelemetryHelpersGlslMatchCpp) {
+  const char* shader = R"glsl(#include "shared/classification.h"
+#include "shared/telemetry.h"
+layout(local_size_x = 64) in;
+struct IntCase { ivec4 p; vec4 idle; };
+struct IntResult { ivec4 quad; uvec4 texel; vec4 word; };
+layout(std430, binding = 0) readonly buffer Cases { IntCase cases[]; };
+layout(std430, binding = 1) writeonly buffer Results { IntResult results[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uint(cases.length())) return;
+  IntCase c = cases[i];
+  results[i].quad = ivec4(quad_offset(c.p.z), quad_traces(c.p.xy, c.p.z, c.p.w) ? 1 : 0, 0);
+  uint t = pack_texel(c.p.xy);
+  uint w = telemetry_pack(uint(c.idle.y), c.idle.x);
+  results[i].texel = uvec4(t, uvec2(unpack_texel(t)), w);
+  results[i].word = vec4(float(telemetry_iterations(w)), telemetry_idle(w), 0.0, 0.0);
+}
+)glsl";
+  const gl::Program prog = test::compile_test_shader("int_twins", shader);
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coord(0, 16383), frame(0, 1 << 20), rays_pick(0, 2), iters(0, 100000);
+  std::uniform_real_distribution<float> idle(-0.5f, 1.5f);
+  std::vector<IntCase> cases;
+  for (int i = 0; i < 4096; ++i)
+    cases.push_back({glm::ivec4(coord(rng), coord(rng), i < 64 ? i : frame(rng), 1 << rays_pick(rng)),
+                     glm::vec4(i % 9 == 0 ? 1.0f : idle(rng), static_cast<float>(iters(rng)), 0, 0)});
+  const auto n = static_cast<GLsizeiptr>(cases.size());
+  gl::Buffer in = gl::make_buffer("int twin cases", n * GLsizeiptr(sizeof(IntCase)), cases.data());
+  gl::Buffer out = gl::make_buffer("int twin results", n * GLsizeiptr(sizeof(IntResult)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  prog.dispatch_2d(static_cast<int>(n), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<IntResult> gpu(cases.size());
+  glGetNamedBufferSubData(out.id(), 0, n * GLsizeiptr(sizeof(IntResult)), gpu.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const IntCase& c = cases[i];
+    const glm::ivec2 o = sh::quad_offset(c.p.z);
+    const std::uint32_t t = sh::pack_texel(glm::ivec2(c.p.x, c.p.y));
+    const std::uint32_t w = sh::telemetry_pack(static_cast<std::uint32_t>(c.idle.y), c.idle.x);
+    const IntResult cpu{glm::ivec4(o, sh::quad_traces(glm::ivec2(c.p.x, c.p.y), c.p.z, c.p.w) ? 1 : 0, 0),
+                        glm::uvec4(t, glm::uvec2(sh::unpack_texel(t)), w),
+                        glm::vec4(static_cast<float>(sh::telemetry_iterations(w)), sh::telemetry_idle(w), 0, 0)};
+    if ((gpu[i].quad != cpu.quad || gpu[i].texel != cpu.texel || gpu[i].word != cpu.word) && ++bad <= 5)
+      ADD_FAILURE() << "case " << i << " (pixel " << c.p.x << "," << c.p.y << " frame " << c.p.z << " rays " << c.p.w
+                    << "): gpu and cpu differ";
+    // The round trips hold: the texel comes back, the iterations saturate at 16 bits.
+    EXPECT_EQ(glm::ivec2(sh::unpack_texel(t)), glm::ivec2(c.p.x, c.p.y));
+    EXPECT_EQ(sh::telemetry_iterations(w), std::min(static_cast<std::uint32_t>(c.idle.y), 65535u));
+  }
+  EXPECT_EQ(bad, 0u);
 }
