@@ -91,4 +91,14 @@ inline bool expect_same_image(const RgbaImageF& a, const RgbaImageF& b, const st
   return false;
 }
 
+// The same for 8-bit images (display images): compared as they are, written as they are.
+inline bool expect_same_image(const RgbaImage8& a, const RgbaImage8& b, const std::string& name) {
+  auto to_float = [](const RgbaImage8& im) {
+    RgbaImageF f{im.width, im.height, std::vector<float>(im.pixels.size())};
+    for (std::size_t i = 0; i < im.pixels.size(); ++i) f.pixels[i] = im.pixels[i] / 255.0f;
+    return f;
+  };
+  return expect_same_image(to_float(a), to_float(b), name);
+}
+
 }  // namespace ssr::test

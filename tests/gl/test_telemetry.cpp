@@ -49,8 +49,7 @@ TEST(Telemetry, MatchesTheDebugImageAndChangesNothing) {
     const FrameRun plain = run_once(r, technique, false);
     const FrameRun inst = run_once(r, technique, true);
     // Instrumented, the same image bit for bit (and the plain build records nothing).
-    EXPECT_EQ(std::memcmp(plain.reflection.pixels.data(), inst.reflection.pixels.data(),
-                          plain.reflection.pixels.size() * sizeof(float)), 0);
+    test::expect_same_image(plain.reflection, inst.reflection, "telemetry-" + technique + "-instrumented");
     EXPECT_FALSE(plain.telemetry.stats().has_value());
 
     // The CPU's count from the debug image (rows read top first; the telemetry's GL order is
@@ -91,8 +90,7 @@ TEST(Telemetry, MatchesTheDebugImageAndChangesNothing) {
     // pixels only). Its idle share depends on the list's order, which the GPU's scheduling sets:
     // it is not compared (on gallery the iteration spread among reflective pixels dominates it).
     const FrameRun listed = run_once(r, technique, true, true);
-    EXPECT_EQ(std::memcmp(plain.reflection.pixels.data(), listed.reflection.pixels.data(),
-                          plain.reflection.pixels.size() * sizeof(float)), 0);
+    test::expect_same_image(plain.reflection, listed.reflection, "telemetry-" + technique + "-listed");
     EXPECT_TRUE(listed.telemetry.histogram == hist);
     EXPECT_LE(listed.telemetry.header.warps, inst.telemetry.header.warps);
   }
