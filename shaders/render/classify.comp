@@ -33,14 +33,7 @@ shared bool tile_traces;
 shared uint group_rays;
 shared uint group_base;
 
-// CLASS_TRACED here means "may trace"; main() decides which of those do this frame.
-uint pixel_class(ivec2 p, out float roughness) {
-  GSample g = gbuffer_fetch(p);
-  roughness = g.roughness;
-  if (!is_reflective(g)) return CLASS_NONE;
-  if (g.roughness > params.roughness_threshold) return CLASS_ENVIRONMENT;
-  return CLASS_TRACED;
-}
+#include "common/classify.glsl"
 
 void main() {
   if (gl_LocalInvocationIndex == 0u) {
@@ -49,39 +42,8 @@ void main() {
   }
   barrier();
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
-  bool traces = false, listed = false;
-  if (all(lessThan(t, params.trace_size.xy))) {
-    int d = params.divisor;
-    ivec2 chosen = t * d + params.trace_size.zw;
-    int frame_index = frame.counts.z;
-    for (int y = 0; y < d; ++y)
-      for (int x = 0; x < d; ++x) {
-        ivec2 p = t * d + ivec2(x, y);
-        if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) continue;
-        float roughness;
-        uint c = pixel_class(p, roughness);
-        if (c == CLASS_TRACED) {
-          // Half resolution: the block's pixel of this frame traces. Full resolution: glossy
-          // pixels above quad_roughness trace `rays_per_quad` of each quad.
-          bool own = d == 2 ? p == chosen
-                            : (roughness <= params.quad_roughness ||
-                               quad_traces(p, frame_index, params.rays_per_quad));
-          if (own) traces = true; else c = CLASS_REUSED;
-        }
-        bool glass = params.list_glass != 0 && texelFetch(glass_surface_tex, p, 0).w >= 1.0;
-        bool pixel_listed = c == CLASS_TRACED || glass;
-        listed = listed || pixel_listed;
-#ifdef CLASSIFY_FOR_TRACER
-        if (!pixel_listed) {
-          imageStore(out_reflection, p, vec4(0.0));
-          imageStore(out_debug, p, vec4(0.0));
-        }
-#else
-        imageStore(out_class, p, vec4(float(c) / CLASS_LEVELS));
-#endif
-        if (params.list_glass != 0 && !pixel_listed) imageStore(out_refraction, p, vec4(0.0));
-      }
-  }
+  bool traces, listed;
+  classify_texel(t, traces, listed);
   uint slot = 0u;
   if (traces) tile_traces = true;
   if (listed) slot = atomicAdd(group_rays, 1u);
