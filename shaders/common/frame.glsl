@@ -20,15 +20,17 @@ float view_z_from_depth(float depth) {
   return -b / max(depth + a, 1e-30);
 }
 
-// Projects a view-space point; returns false when it is at or behind the camera plane (w <= 0),
-// where dividing by w would flip or blow up.
-bool project_to_uv(vec3 p, out vec2 uv, out float depth) {
-  vec4 c = frame.proj * vec4(p, 1.0);
+// Clip coordinates to uv and depth; false at or behind the camera plane (w <= 0), where
+// dividing by w would flip or blow up.
+bool clip_to_uv(vec4 c, out vec2 uv, out float depth) {
   if (c.w <= 1e-6) { uv = vec2(-1.0); depth = 0.0; return false; }
   uv = c.xy / c.w * 0.5 + 0.5;
   depth = c.z / c.w;
   return true;
 }
+
+// Projects a view-space point (this frame's camera).
+bool project_to_uv(vec3 p, out vec2 uv, out float depth) { return clip_to_uv(frame.proj * vec4(p, 1.0), uv, depth); }
 
 bool uv_on_screen(vec2 uv) { return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0))); }
 

@@ -4,11 +4,7 @@
 
 // Last frame's uv of a world point; false behind last frame's camera.
 bool previous_uv(vec3 world, out vec2 uv, out float depth) {
-  vec4 c = frame.prev_view_proj * vec4(world, 1.0);
-  if (c.w <= 1e-6) { uv = vec2(-1.0); depth = 0.0; return false; }
-  uv = c.xy / c.w * 0.5 + 0.5;
-  depth = c.z / c.w;
-  return true;
+  return clip_to_uv(frame.prev_view_proj * vec4(world, 1.0), uv, depth);
 }
 
 // Was the surface seen at last frame's `uv` like this pixel's (normal and roughness; with
