@@ -65,6 +65,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/errors.h"
+#include "core/params.h"
 #include "scene/animation.h"
 #include "scene/meshgen.h"
 
@@ -368,26 +369,47 @@ Image tiles_normal_map(int size, int per_side) {
 }
 
 // ---- options ------------------------------------------------------------------------------------
-// "name:key=value,key=value". Each scene lists the options it takes; parse_options checks keys
-// and values and fills in the defaults, so a maker reads every key it declared with opt.at().
+// "name:key=value,key=value". The options are parameter rows (core/params.h, the same
+// description techniques use) over one struct; each scene lists the rows it takes, and
+// parse_options checks keys and values against them, so a maker reads typed values.
 
-struct OptionSpec {
-  std::string key;
-  int min = 0, max = 0;              // integer and number options: the allowed range
-  std::vector<std::string> choices;  // choice options; empty for an integer or number option
-  std::string default_value;
-  bool number = false;  // a real number in [min, max] (decimal, e.g. 0.25), not an integer
-  std::string allowed() const {
-    if (number) return std::to_string(min) + ".0.." + std::to_string(max) + ".0";
-    if (choices.empty()) return std::to_string(min) + ".." + std::to_string(max);
+struct SceneOptions {
+  std::int32_t reflectors = 1;
+  std::int32_t normal_map = 2;  // ripples, tiles, none
+  float floor_roughness = 0.0f;
+  std::int32_t path = -1;       // a choice of the scene's paths; -1: none (the scene's default)
+};
+const SceneOptions kDefaultOptions{};
+
+const ParamDesc kReflectorsOption = SSR_PARAM_INT(SceneOptions, reflectors, 1, Scene::kMaxReflectors, "",
+                                                  "planar reflectors: floor tiles, then wall mirrors");
+const ParamDesc kNormalMapOption = SSR_PARAM_CHOICE(SceneOptions, normal_map, "a procedural normal map on the floor",
+                                                    "ripples", "tiles", "none");
+const ParamDesc kFloorRoughnessOption = SSR_PARAM_FLOAT(SceneOptions, floor_roughness, 0, 1, 0.05, "",
+                                                        "the mirror floor's roughness (0: a mirror)");
+
+// "path=NAME": the scene's camera path names (as its maker adds them; a unit test compares),
+// none by default.
+ParamDesc path_option(std::vector<const char*> names) {
+  ParamDesc d = SSR_PARAM_CHOICE(SceneOptions, path, "the camera path a sequence or the viewer starts on", "");
+  d.choices = std::move(names);
+  d.max = static_cast<double>(d.choices.size()) - 1;
+  d.auto_value = -1;  // none: the scene's default
+  return d;
+}
+
+// What `key=` takes: "1..16", "0.0..1.0" (a real number) or "a|b|c".
+std::string allowed(const ParamDesc& d) {
+  if (d.type == ParamType::Choice) {
     std::string s;
-    for (const std::string& c : choices) s += (s.empty() ? "" : "|") + c;
+    for (const char* c : d.choices) s += (s.empty() ? "" : "|") + std::string(c);
     return s;
   }
-};
-
-// Every option a scene declares, by key, as validated text (defaults filled in).
-using Options = std::map<std::string, std::string>;
+  char buf[64];
+  if (d.type == ParamType::Float) std::snprintf(buf, sizeof buf, "%.1f..%.1f", d.min, d.max);
+  else std::snprintf(buf, sizeof buf, "%d..%d", static_cast<int>(d.min), static_cast<int>(d.max));
+  return buf;
+}
 
 // A decimal number as the whole of `text` (no sign but '-', no spaces; locale-independent), if
 // it is one and finite.
@@ -399,21 +421,21 @@ std::optional<double> parse_number(std::string_view text) {
   return v;
 }
 
-std::string options_help(const std::vector<OptionSpec>& specs) {
+std::string options_help(const std::vector<ParamDesc>& rows) {
   std::string s;
-  for (const OptionSpec& o : specs) s += (s.empty() ? "" : ", ") + o.key + "=" + o.allowed();
+  for (const ParamDesc& o : rows) s += (s.empty() ? "" : ", ") + std::string(o.name) + "=" + allowed(o);
   return s;
 }
 
 // ---- gallery ------------------------------------------------------------------------------------
 
-Scene gallery(const Options& opt) {
+Scene gallery(const SceneOptions& opt) {
   Builder b;
   b.s.name = "gallery";
-  const int n_reflectors = std::stoi(opt.at("reflectors"));
-  const std::string& normal_map = opt.at("normal_map");
+  const int n_reflectors = opt.reflectors;
+  const std::string normal_map = kNormalMapOption.choices[static_cast<std::size_t>(opt.normal_map)];
   // + 0.0f: "-0" gives roughness +0.
-  const float floor_roughness = static_cast<float>(*parse_number(opt.at("floor_roughness"))) + 0.0f;
+  const float floor_roughness = opt.floor_roughness + 0.0f;
 
   // Floor: x in [-16, 16], z in [-7, 10], y = 0; planar reflector 1, metallic; a perfect mirror
   // (roughness 0) unless floor_roughness says otherwise.
@@ -1112,8 +1134,7 @@ Scene hard_depth_range() {
 // The gallery moved 1e4 m along +X and -Z (camera, lights, reflectors too): world-space
 // positions lose about 3 decimal digits of float precision.
 Scene hard_far_origin() {
-  Options opt{{"reflectors", "1"}, {"normal_map", "none"}, {"floor_roughness", "0"}};
-  Scene s = gallery(opt);
+  Scene s = gallery(SceneOptions{});
   s.name = "hard-far-origin";
   const glm::vec3 o(1.0e4f, 0.0f, -1.0e4f);
   for (Mesh& m : s.meshes) meshgen::transform(m, translate(o));
@@ -1260,13 +1281,10 @@ Scene hard_reflectors() {
 
 struct Entry {
   BuiltinSceneInfo info;
-  std::vector<OptionSpec> options;
-  Scene (*make)(const Options&);
+  std::vector<ParamDesc> options;
+  Scene (*make)(const SceneOptions&);
 };
 
-// "path=NAME": the scene's camera path names (as its maker adds them; a unit test compares),
-// none by default.
-OptionSpec path_option(std::vector<std::string> names) { return {"path", 0, 0, std::move(names), ""}; }
 
 const std::vector<Entry>& entries() {
   static const std::vector<Entry> list = {
@@ -1275,73 +1293,65 @@ const std::vector<Entry>& entries() {
         "a red marker sphere; options gallery:reflectors=1..16 (floor tiles plus wall mirrors), "
         "normal_map=ripples|tiles|none, floor_roughness=0.0..1.0 (default 0: a mirror) (e.g. "
         "gallery:reflectors=5,normal_map=tiles or gallery:floor_roughness=0.5)"},
-       {{"reflectors", 1, Scene::kMaxReflectors, {}, "1"},
-        {"normal_map", 0, 0, {"ripples", "tiles", "none"}, "none"},
-        {"floor_roughness", 0, 1, {}, "0", /*number=*/true},
+       {kReflectorsOption, kNormalMapOption, kFloorRoughnessOption,
         path_option({"dolly", "orbit", "pan", "slide", "enter", "cut"})},
        &gallery},
       {{"cornell",
         "5 m Cornell box, open at the front, with a glossy metal floor (roughness 0.3) and two "
         "boxes"},
        {path_option({"dolly"})},
-       [](const Options&) { return cornell(); }},
+       [](const SceneOptions&) { return cornell(); }},
       {{"corridor",
         "40 m corridor with a near-mirror floor (planar reflector, roughness 0.05), pillars and "
         "coloured panels"},
        {path_option({"dolly", "pan"})},
-       [](const Options&) { return corridor(); }},
+       [](const SceneOptions&) { return corridor(); }},
       {{"glass", "refraction: a glass sphere (ior 1.5) and a tilted slab (ior 1.33) before a brick wall"},
        {path_option({"orbit"})},
-       [](const Options&) { return glass(); }},
+       [](const SceneOptions&) { return glass(); }},
       {{"ramp",
         "roughness ramp: a metal floor in 11 bands of roughness 0.0, 0.1, ..., 1.0 side by side "
         "(band_0.0 .. band_1.0, planar reflectors 1..11: reflector:N is roughness (N-1)/10), "
         "coloured boxes, spheres and columns on it, a glowing sphere and strip, a brick wall"},
        {path_option({"dolly", "orbit", "pan"})},
-       [](const Options&) { return ramp(); }},
+       [](const SceneOptions&) { return ramp(); }},
       // Hard cases (issue 7): see the comments above each builder and docs/ROBUSTNESS.md.
       {{"hard-grazing", "hard case: camera 5 cm above a 400 m mirror floor, looking along it"},
        {path_option({"dolly"})},
-       [](const Options&) { return hard_grazing(); }},
+       [](const SceneOptions&) { return hard_grazing(); }},
       {{"hard-mirror-box",
         "hard case: camera inside a closed box of six mirrors (rays back at the camera, through "
         "the near plane)"},
        {path_option({"turn"})},
-       [](const Options&) { return hard_mirror_box(); }},
+       [](const SceneOptions&) { return hard_mirror_box(); }},
       {{"hard-thin", "hard case: a 2 cm pole and 1 cm fins standing on a mirror floor"},
        {path_option({"truck"})},
-       [](const Options&) { return hard_thin(); }},
+       [](const SceneOptions&) { return hard_thin(); }},
       {{"hard-depth-range",
         "hard case: near 0.001, far 1e5, objects from 0.01 to 5e4 m on a mirror floor"},
        {path_option({"dolly"})},
-       [](const Options&) { return hard_depth_range(); }},
+       [](const SceneOptions&) { return hard_depth_range(); }},
       {{"hard-far-origin", "hard case: the gallery moved 1e4 m from the origin (camera too)"},
        {path_option({"dolly", "orbit", "pan", "slide", "enter", "cut"})},
-       [](const Options&) { return hard_far_origin(); }},
+       [](const SceneOptions&) { return hard_far_origin(); }},
       {{"hard-degenerate",
         "hard case: normals in the face, flipped and cancelling, a zero-area triangle, an "
         "edge-on sliver, much sky"},
        {path_option({"pan"})},
-       [](const Options&) { return hard_degenerate(); }},
+       [](const SceneOptions&) { return hard_degenerate(); }},
       {{"hard-roughness", "hard case: a metal floor split into roughness exactly 0 and exactly 1"},
        {path_option({"orbit"})},
-       [](const Options&) { return hard_roughness(); }},
+       [](const SceneOptions&) { return hard_roughness(); }},
       {{"hard-reflectors",
         "hard case: planar mirrors seen edge-on by the default camera, one grazing, one behind it"},
        {path_option({"cut"})},
-       [](const Options&) { return hard_reflectors(); }},
+       [](const SceneOptions&) { return hard_reflectors(); }},
   };
   return list;
 }
 
-Options default_options(const Entry& e) {
-  Options o;
-  for (const OptionSpec& spec : e.options) o.emplace(spec.key, spec.default_value);
-  return o;
-}
-
 // Parses the text after "name:" for entry `e`; `full` is the whole scene string (for messages).
-Options parse_options(const Entry& e, const std::string& full, std::string_view text) {
+SceneOptions parse_options(const Entry& e, const std::string& full, std::string_view text) {
   const std::string& name = e.info.name;
   std::string with_options;  // "; the scenes that take options: gallery (...)"
   for (const Entry& other : entries())
@@ -1358,7 +1368,9 @@ Options parse_options(const Entry& e, const std::string& full, std::string_view 
   if (text.empty())
     throw InputError("scene '" + full + "' has nothing after ':'; write " + name +
                      ":key=value[,key=value] with " + help);
-  Options given;
+  SceneOptions opt;
+  const ParamSet set(name, e.options, &opt, &kDefaultOptions);
+  std::vector<std::string> given;
   std::size_t pos = 0;
   while (true) {
     const std::size_t comma = std::min(text.find(',', pos), text.size());
@@ -1371,45 +1383,49 @@ Options parse_options(const Entry& e, const std::string& full, std::string_view 
     if (key.empty())
       throw InputError("scene '" + full + "' has an option without a key (options of " + name +
                        ": " + help + ")");
-    const auto spec = std::find_if(e.options.begin(), e.options.end(),
-                                   [&](const OptionSpec& o) { return o.key == key; });
-    if (spec == e.options.end())
+    const int row = set.find(key);
+    if (row < 0 || key.find('.') != std::string::npos)
       throw InputError("built-in scene '" + name + "' has no option '" + key + "' (options: " +
                        help + ")");
+    const ParamDesc& d = e.options[static_cast<std::size_t>(row)];
     if (eq == std::string_view::npos)
       throw InputError("option '" + key + "' of built-in scene '" + name +
-                       "' has no value; write " + key + "=" + spec->allowed());
+                       "' has no value; write " + key + "=" + allowed(d));
     const std::string value(item.substr(eq + 1));
-    if (given.count(key))
+    if (std::find(given.begin(), given.end(), key) != given.end())
       throw InputError("option '" + key + "' is given twice in '" + full + "' (allowed: " + key +
-                       "=" + spec->allowed() + ")");
-    if (spec->number) {
-      const std::optional<double> v = parse_number(value);
-      if (!v || *v < spec->min || *v > spec->max)
+                       "=" + allowed(d) + ")");
+    given.push_back(key);
+    // The text is checked here (strict forms: no "auto", no spaces); the table's range too.
+    double v = 0;
+    if (d.type == ParamType::Float) {
+      const std::optional<double> x = parse_number(value);
+      if (!x || *x < d.min || *x > d.max)
         throw InputError("option '" + key + "' of built-in scene '" + name + "' must be a number in [" +
-                         std::to_string(spec->min) + ", " + std::to_string(spec->max) +
+                         std::to_string(static_cast<int>(d.min)) + ", " + std::to_string(static_cast<int>(d.max)) +
                          "] (e.g. 0.5), not '" + value + "'");
-      given[key] = value;
-    } else if (spec->choices.empty()) {
-      int v = 0;
+      v = *x;
+    } else if (d.type == ParamType::Int) {
+      int i = 0;
       const char* first = value.data();
       const char* last = value.data() + value.size();
-      const auto [end, ec] = std::from_chars(first, last, v);
-      if (value.empty() || ec != std::errc() || end != last || v < spec->min || v > spec->max)
+      const auto [end, ec] = std::from_chars(first, last, i);
+      if (value.empty() || ec != std::errc() || end != last || i < d.min || i > d.max)
         throw InputError("option '" + key + "' of built-in scene '" + name +
-                         "' must be an integer in " + spec->allowed() + ", not '" + value + "'");
-      given[key] = std::to_string(v);
+                         "' must be an integer in " + allowed(d) + ", not '" + value + "'");
+      v = i;
     } else {
-      if (std::find(spec->choices.begin(), spec->choices.end(), value) == spec->choices.end())
+      const auto c = std::find_if(d.choices.begin(), d.choices.end(), [&](const char* n) { return value == n; });
+      if (c == d.choices.end())
         throw InputError("option '" + key + "' of built-in scene '" + name + "' must be one of " +
-                         spec->allowed() + ", not '" + value + "'");
-      given[key] = value;
+                         allowed(d) + ", not '" + value + "'");
+      v = static_cast<double>(c - d.choices.begin());
     }
+    ParamSet(set).set(static_cast<std::size_t>(row), v);
     if (comma == text.size()) break;
     pos = comma + 1;
   }
-  for (const auto& [key, value] : default_options(e)) given.emplace(key, value);
-  return given;
+  return opt;
 }
 
 }  // namespace
@@ -1419,11 +1435,15 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
     std::vector<BuiltinSceneInfo> v;
     for (const Entry& e : entries()) {
       v.push_back(e.info);
-      for (const OptionSpec& o : e.options) {
-        BuiltinSceneInfo::Option opt{o.key, o.default_value, o.choices};
-        if (o.choices.empty()) {
-          const std::vector<double> picks = o.number ? std::vector<double>{0.0, 0.1, 0.25, 0.5, 1.0}
-                                                     : std::vector<double>{1, 2, 4, 5, 8, 16};
+      SceneOptions defaults;
+      const ParamSet set(e.info.name, e.options, &defaults, &kDefaultOptions);
+      for (std::size_t i = 0; i < e.options.size(); ++i) {
+        const ParamDesc& o = e.options[i];
+        BuiltinSceneInfo::Option opt{o.name, set.is_auto(i) ? "" : set.default_string(i), {}};
+        for (const char* c : o.choices) opt.values.push_back(c);
+        if (o.type != ParamType::Choice) {
+          const std::vector<double> picks = o.type == ParamType::Float ? std::vector<double>{0.0, 0.1, 0.25, 0.5, 1.0}
+                                                                       : std::vector<double>{1, 2, 4, 5, 8, 16};
           for (double x : picks)
             if (x >= o.min && x <= o.max) {
               char buf[32];
@@ -1434,9 +1454,9 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
         v.back().options.push_back(std::move(opt));
       }
       // The camera paths, from the path option (the same names the scene has).
-      for (const OptionSpec& o : e.options)
-        if (o.key == "path")
-          v.back().description += "; camera paths (" + e.info.name + ":path=NAME): " + o.allowed();
+      for (const ParamDesc& o : e.options)
+        if (std::string_view(o.name) == "path")
+          v.back().description += "; camera paths (" + e.info.name + ":path=NAME): " + allowed(o);
     }
     return v;
   }();
@@ -1448,13 +1468,17 @@ Scene make_builtin_scene(const std::string& name) {
   const std::string base = name.substr(0, colon);
   for (const Entry& e : entries()) {
     if (e.info.name == base) {
-      const Options opt = colon == std::string::npos
-                              ? default_options(e)
-                              : parse_options(e, name, std::string_view(name).substr(colon + 1));
+      const SceneOptions opt = colon == std::string::npos
+                                   ? SceneOptions{}
+                                   : parse_options(e, name, std::string_view(name).substr(colon + 1));
       Scene s = e.make(opt);
       s.name = name;  // options included: results and file names record what was asked for
-      if (const auto p = opt.find("path"); p != opt.end() && !p->second.empty())
-        s.animation.default_path = static_cast<int>(&find_path(s, p->second) - s.animation.paths.data());
+      if (opt.path >= 0) {
+        const ParamDesc& path = *std::find_if(e.options.begin(), e.options.end(),
+                                              [](const ParamDesc& d) { return std::string_view(d.name) == "path"; });
+        s.animation.default_path =
+            static_cast<int>(&find_path(s, path.choices[static_cast<std::size_t>(opt.path)]) - s.animation.paths.data());
+      }
       validate(s);
       return s;
     }
