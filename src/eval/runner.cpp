@@ -145,12 +145,6 @@ std::vector<HitClass> ScoredFrame::hit_classes_of(const Score& s, const Techniqu
                      t.declare().planar_only);
 }
 
-namespace {
-bool is_frame_pass(const std::string& name) {
-  return name == "gbuffer" || name == "lighting" || name == "composite" || name == "display";
-}
-}  // namespace
-
 Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const TimingOptions& o) {
   gl::PassTimer timer(o.clock);
   for (int f = 0; f < o.warmup + o.frames; ++f) {

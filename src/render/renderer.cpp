@@ -14,6 +14,10 @@
 
 namespace ssr {
 
+bool is_frame_pass(std::string_view pass_name) {
+  return std::find(std::begin(kFramePasses), std::end(kFramePasses), pass_name) != std::end(kFramePasses);
+}
+
 namespace {
 std::uint64_t next_id() {
   static std::atomic<std::uint64_t> id{1};
@@ -301,7 +305,7 @@ void Renderer::begin_frame(const FrameRequest& request) {
 
 void Renderer::gbuffer_pass(gl::PassTimer* timer) {
   bind_frame_inputs();
-  gl::ScopedPass pass(timer, "gbuffer");
+  gl::ScopedPass pass(timer, kFramePasses[0]);  // gbuffer
   glBindFramebuffer(GL_FRAMEBUFFER, gbuffer_.fbo.id());
   glViewport(0, 0, width_, height_);
   const float zero[4] = {0, 0, 0, 0};
@@ -335,7 +339,7 @@ void Renderer::gbuffer_pass(gl::PassTimer* timer) {
 
 void Renderer::lighting_pass(gl::PassTimer* timer) {
   bind_frame_inputs();
-  gl::ScopedPass pass(timer, "lighting");
+  gl::ScopedPass pass(timer, kFramePasses[1]);  // lighting
   glBindImageTexture(IMG_OUT, lit_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(IMG_MOTION, motion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
   lighting_prog_.dispatch_2d(width_, height_);
@@ -452,7 +456,7 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
 void Renderer::composite_pass(int blend, gl::PassTimer* timer) {
   blend_ = blend;
   bind_frame_inputs();
-  gl::ScopedPass pass(timer, "composite");
+  gl::ScopedPass pass(timer, kFramePasses[2]);  // composite
   glBindImageTexture(IMG_OUT, color_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glProgramUniform1i(composite_prog_.id(), 0, blend_);
   composite_prog_.dispatch_2d(width_, height_);
@@ -461,7 +465,7 @@ void Renderer::composite_pass(int blend, gl::PassTimer* timer) {
 
 void Renderer::display_pass(ViewMode view, gl::PassTimer* timer) {
   bind_frame_inputs();
-  gl::ScopedPass pass(timer, "display");
+  gl::ScopedPass pass(timer, kFramePasses[3]);  // display
   glBindImageTexture(IMG_OUT, display_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(IMG_OUT2, linear_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glProgramUniform1i(display_prog_.id(), 0, static_cast<int>(view));

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/image.h"
@@ -28,6 +29,12 @@
 #include "scene/scene.h"
 
 namespace ssr {
+
+// The frame's own timed passes: what every technique pays, not part of its time (bench's
+// technique time, the viewer's plots). The inputs a technique declares (back faces, the Hi-Z
+// pyramid) count as its own.
+inline constexpr const char* kFramePasses[] = {"gbuffer", "lighting", "composite", "display"};
+bool is_frame_pass(std::string_view pass_name);
 
 // One frame to render: a camera at a time. Consecutive indices (with no cut) carry history.
 struct FrameRequest {

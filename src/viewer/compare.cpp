@@ -31,9 +31,6 @@ std::string technique_key(Technique& t) {
   return k;
 }
 
-bool is_frame_pass(const std::string& name) {
-  return name == "gbuffer" || name == "lighting" || name == "composite" || name == "display";
-}
 
 }  // namespace
 
