@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "shared/ppr.h"
 #include "shared/ppr_packing.h"
+#include "techniques/ray_options.h"
 #include "techniques/technique.h"
 
 namespace ssr {
@@ -32,11 +33,11 @@ using P = shared::PprParams;
 const ParamDesc kTable[] = {
     SSR_PARAM_CHOICE(P, hole_fill, "Fill pixels nothing projected onto from their neighbours' solutions.",
                      "none", "4-neighbour", "8-neighbour"),
-    SSR_PARAM_INT(P, samples, 1, 16, "rays", "GGX VNDF samples per rough reflector pixel (per-pixel rotated)."),
-    SSR_PARAM_FLOAT(P, roughness, -1, 1, 0.01, "", "Override the G-buffer roughness everywhere (-1 keeps the material's)."),
+    samples_row(offsetof(P, samples)),
+    roughness_row(offsetof(P, roughness)),
     SSR_PARAM_BOOL(P, normal_maps, "Follow normal-mapped normals: reflection distance times the perturbed reflection vector, reprojected."),
     SSR_PARAM_BOOL(P, edge_fade, "Fade confidence towards the screen edges: clamp(1 - |u-0.5| - |v-0.5|, 0, 1)."),
-    SSR_PARAM_INT(P, seed, 0, 1000000, "", "Random seed of the rough samples."),
+    seed_row(offsetof(P, seed)),
     SSR_PARAM_CHOICE(P, fallback,
                      "Tracer (at its defaults) for the reflective pixels projection cannot serve: non-planar surfaces, "
                      "unfilled holes, normal-mapped rays that leave the plane's solution; none is the thesis's technique.",

@@ -11,6 +11,20 @@
 
 namespace ssr {
 
+// The rows a rough-reflection technique shares whatever its Params (the tracers' RayOptions,
+// ppr's own fields): one description each, at the member's offset.
+inline ParamDesc samples_row(std::size_t offset) {
+  return {"samples", ParamType::Int, offset, 1, 16, 1, "rays", "GGX VNDF rays per rough pixel (mirror pixels trace one)."};
+}
+inline ParamDesc roughness_row(std::size_t offset) {
+  return with_auto({"roughness", ParamType::Float, offset, 0, 1, 0.01, "",
+                    "Override the G-buffer roughness everywhere (auto keeps each material's)."},
+                   -1.0);
+}
+inline ParamDesc seed_row(std::size_t offset) {
+  return {"seed", ParamType::Int, offset, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."};
+}
+
 // The shared rows for a Params struct P whose member `ray` is a RayOptions. `with_blend` adds
 // the Roberts blend switch (only linear-binary offers it).
 template <class P>
@@ -23,11 +37,8 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
     return d;
   };
   std::vector<ParamDesc> t(own);
-  t.push_back(at({"samples", ParamType::Int, 0, 1, 16, 1, "rays",
-                  "GGX VNDF rays per rough pixel (mirror pixels trace one)."}, offsetof(R, samples)));
-  t.push_back(at(with_auto({"roughness", ParamType::Float, 0, 0, 1, 0.01, "",
-                            "Override the G-buffer roughness everywhere (auto keeps each material's)."}, -1.0),
-                 offsetof(R, roughness)));
+  t.push_back(at(samples_row(0), offsetof(R, samples)));
+  t.push_back(at(roughness_row(0), offsetof(R, roughness)));
   t.push_back(at({"backface_thickness", ParamType::Bool, 0, 0, 1, 1, "",
                   "Thickness from a back-face depth buffer: a hit lies between front and back faces."},
                  offsetof(R, backface_thickness)));
@@ -47,8 +58,7 @@ std::vector<ParamDesc> with_ray_options(std::initializer_list<ParamDesc> own, bo
     blend.group = "";
     t.push_back(blend);
   }
-  t.push_back(at({"seed", ParamType::Int, 0, 0, 1000000, 1, "", "Random seed of the rough samples and the jitter."},
-                 offsetof(R, seed)));
+  t.push_back(at(seed_row(0), offsetof(R, seed)));
   t.push_back(at({"compact", ParamType::Bool, 0, 0, 1, 1, "",
                   "Trace only the pixels with work: the tile classification lists them (and those behind glass) "
                   "and the trace runs one lane per listed pixel (indirect dispatch); off: one lane per screen pixel "
