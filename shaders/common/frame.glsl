@@ -29,6 +29,9 @@ bool clip_to_uv(vec4 c, out vec2 uv, out float depth) {
   return true;
 }
 
+// Roberts's edge fade: 1 at the screen's centre, 0 on its diamond towards the edges.
+float edge_fade(vec2 uv) { return clamp(1.0 - abs(uv.x - 0.5) - abs(uv.y - 0.5), 0.0, 1.0); }
+
 // Projects a view-space point (this frame's camera).
 bool project_to_uv(vec3 p, out vec2 uv, out float depth) { return clip_to_uv(frame.proj * vec4(p, 1.0), uv, depth); }
 

@@ -80,6 +80,6 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color) && u_fallback == 1)
     return PprResolved(false, vec4(0.0), debug);
   float a = 1.0;
-  if (params.edge_fade != 0) a *= clamp(1.0 - abs(src_uv.x - 0.5) - abs(src_uv.y - 0.5), 0.0, 1.0);
+  if (params.edge_fade != 0) a *= edge_fade(src_uv);
   return PprResolved(true, vec4(color, a), debug);
 }

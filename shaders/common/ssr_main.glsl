@@ -88,8 +88,7 @@ float reflect_pixel(ivec2 p) {
     telemetry_ray(t.steps);
     if (!t.hit) continue;
     float w = 1.0;
-    if (o.edge_fade != 0)
-      w *= clamp(1.0 - abs(t.uv.x - 0.5) - abs(t.uv.y - 0.5), 0.0, 1.0);
+    if (o.edge_fade != 0) w *= edge_fade(t.uv);
     if (o.falloff_distance > 0.0)
       w *= 1.0 - smoothstep(0.5 * o.falloff_distance, o.falloff_distance, t.distance);
     if (o.blend == 1) {

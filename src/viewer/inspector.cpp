@@ -55,6 +55,10 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   j["reflectance"] = m[1] / 255.0;
   j["flags"] = m[2];
   j["object"] = m[3];
+  const auto e = gl::read_texel<float, 4>(g.emission, x, y, GL_RGBA, GL_FLOAT);
+  j["emission"] = vec(e.data(), 3);
+  const auto mv = gl::read_texel<float, 4>(r.motion(), x, y, GL_RGBA, GL_FLOAT);
+  j["motion"] = vec(mv.data(), 2);  // pixels to last frame's position
   j["reflective"] = depth > 0.0f && (m[2] & MATERIAL_FLAG_REFLECTIVE) != 0u;
   const std::size_t at = static_cast<std::size_t>(y) * g.depth.width() + x;
   j["class"] = classes && at < classes->size() ? nlohmann::json(pixel_class_name((*classes)[at])) : nlohmann::json(nullptr);

@@ -25,7 +25,8 @@ struct SideImages {
 // x, y: image pixel, row 0 at the top. `classes`: the reference's classes of this frame (row 0 =
 // top) when one is current. `truth`: the side (0 or 1) that is the ground truth, if any.
 // Keys: pixel, depth (reversed-Z), view_depth (m), normal (view space), roughness, albedo,
-// metallic, reflector, reflectance, flags, object, reflective, class, exposure, and per side
+// metallic, reflector, reflectance, flags, object, emission, motion (px), reflective, class,
+// exposure, and per side
 // (side_key: "a", "b", "truth"): technique, colour (linear), display (0..255 of the shown view), steps, hits,
 // hit_distance, offset (ppr), error (mean |side - truth| of display values, 0..1).
 nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,

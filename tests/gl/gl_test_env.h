@@ -63,6 +63,24 @@ inline gl::Program compile_test_shader(const std::string& name, const std::strin
   return gl::Program::compute(gl::ShaderSource(dir), "test/" + name + ".comp");
 }
 
+// A twin test's GPU side: `cases` at SSBO binding 0, one invocation each (local size 64 along
+// x), the results read back from binding 1 (the shader writes one Out per case).
+template <class Out, class In>
+std::vector<Out> run_twin_shader(const gl::Program& prog, const std::vector<In>& cases) {
+  const auto n = static_cast<GLsizeiptr>(cases.size());
+  gl::Buffer in = gl::make_buffer("twin cases", n * GLsizeiptr(sizeof(In)), cases.data());
+  gl::Buffer out = gl::make_buffer("twin results", n * GLsizeiptr(sizeof(Out)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  prog.dispatch_2d(static_cast<int>(n), 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<Out> results(cases.size());
+  glGetNamedBufferSubData(out.id(), 0, n * GLsizeiptr(sizeof(Out)), results.data());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  return results;
+}
+
 // Whether two float images are the same bit for bit. When not, the test fails and writes
 // <name>-a.png, <name>-b.png and <name>-diff.png (|a - b| x 16, tone-free) into
 // $SSRLAB_TEST_OUT (default: the system's temporary directory) and names them in the failure.

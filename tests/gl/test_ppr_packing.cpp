@@ -126,18 +126,7 @@ bool same(glm::vec2 a, glm::vec2 b) { return a.x == b.x && a.y == b.y; }
 TEST(PprPackingGl, GlslMatchesCppBitForBit) {
   const gl::Program prog = test::compile_test_shader("ppr_packing", kShader);
   const std::vector<PprCase> cases = make_cases();
-  const auto n = static_cast<GLsizeiptr>(cases.size());
-
-  gl::Buffer in = gl::make_buffer("ppr packing cases", n * GLsizeiptr(sizeof(PprCase)), cases.data());
-  gl::Buffer out = gl::make_buffer("ppr packing results", n * GLsizeiptr(sizeof(PprResult)));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-  prog.dispatch_2d(static_cast<int>(n), 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<PprResult> gpu(cases.size());
-  glGetNamedBufferSubData(out.id(), 0, n * GLsizeiptr(sizeof(PprResult)), gpu.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  const std::vector<PprResult> gpu = test::run_twin_shader<PprResult>(prog, cases);
 
   int bad_pack = 0, bad_unpack = 0, bad_raw = 0, bad_fb = 0, bad_empty = 0, bad_orient = 0, empties = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {

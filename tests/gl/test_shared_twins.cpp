@@ -150,17 +150,7 @@ float max_diff(glm::vec4 a, glm::vec4 b) {
 TEST(SharedTwins, SamplingTonemapAndColormapGlslMatchCpp) {
   const gl::Program prog = test::compile_test_shader("twins", kShader);
   const std::vector<TwinCase> cases = make_cases();
-  const auto n = static_cast<GLsizeiptr>(cases.size());
-  gl::Buffer in = gl::make_buffer("twin cases", n * GLsizeiptr(sizeof(TwinCase)), cases.data());
-  gl::Buffer out = gl::make_buffer("twin results", n * GLsizeiptr(sizeof(TwinResult)));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-  prog.dispatch_2d(static_cast<int>(n), 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<TwinResult> gpu(cases.size());
-  glGetNamedBufferSubData(out.id(), 0, n * GLsizeiptr(sizeof(TwinResult)), gpu.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  const std::vector<TwinResult> gpu = test::run_twin_shader<TwinResult>(prog, cases);
 
   std::size_t bad_bits = 0;
   float basis = 0, vndf = 0, refl = 0, tonemap = 0, srgb = 0, display = 0, heat = 0, hue = 0, swatches = 0;
@@ -237,17 +227,7 @@ void main() {
   for (int i = 0; i < 4096; ++i)
     cases.push_back({glm::ivec4(coord(rng), coord(rng), i < 64 ? i : frame(rng), 1 << rays_pick(rng)),
                      glm::vec4(i % 9 == 0 ? 1.0f : idle(rng), static_cast<float>(iters(rng)), 0, 0)});
-  const auto n = static_cast<GLsizeiptr>(cases.size());
-  gl::Buffer in = gl::make_buffer("int twin cases", n * GLsizeiptr(sizeof(IntCase)), cases.data());
-  gl::Buffer out = gl::make_buffer("int twin results", n * GLsizeiptr(sizeof(IntResult)));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
-  prog.dispatch_2d(static_cast<int>(n), 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<IntResult> gpu(cases.size());
-  glGetNamedBufferSubData(out.id(), 0, n * GLsizeiptr(sizeof(IntResult)), gpu.data());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  const std::vector<IntResult> gpu = test::run_twin_shader<IntResult>(prog, cases);
   std::size_t bad = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const IntCase& c = cases[i];
