@@ -42,6 +42,13 @@ truth now
 frames 2
 status
 truth live
+frames 1
+screenshot split-image.png
+window-shot split.png
+compare diff
+frames 1
+screenshot diff-image.png
+window-shot diff.png
 compare grid
 frames 1
 screenshot grid-image.png
@@ -107,6 +114,13 @@ red = sum(1 for y in range(4, 40) for x in range(165, 320)
           if px(stale, x, y)[0] > 100 and px(stale, x, y)[1] < 60 and px(stale, x, y)[2] < 50)
 print(f'stale banner pixels: {red}')
 assert red > 200, 'the stale truth is not marked on the image'
+# Split and difference: the panel covers nothing either (split: away from the divider at x=160
+# and the A/B labels at the bottom, which are the mode's own overlays).
+for name, skip in (('split', lambda x, y: abs(x - 160) <= 3 or y >= 150), ('diff', lambda x, y: False)):
+    win, img = read_png(name + '.png'), read_png(name + '-image.png')
+    bad = sum(1 for y in range(180) for x in range(320) if not skip(x, y) and px(win, x, y) != px(img, x, y))
+    print(f'{name}: image area pixels that differ from the image: {bad}')
+    assert bad == 0, f'something is drawn over the {name} image'
 # The grid: four cells of 160x90, a label in each cell's bottom-left corner (window only).
 grid, grid_image = read_png('grid.png'), read_png('grid-image.png')
 assert (grid_image[0], grid_image[1]) == (320, 180)
