@@ -81,14 +81,9 @@ std::vector<Out> run_twin_shader(const gl::Program& prog, const std::vector<In>&
   return results;
 }
 
-// Whether two float images are the same bit for bit. When not, the test fails and writes
-// <name>-a.png, <name>-b.png and <name>-diff.png (|a - b| x 16, tone-free) into
-// $SSRLAB_TEST_OUT (default: the system's temporary directory) and names them in the failure.
-inline bool expect_same_image(const RgbaImageF& a, const RgbaImageF& b, const std::string& name) {
-  if (a.width == b.width && a.height == b.height &&
-      std::equal(a.pixels.begin(), a.pixels.end(), b.pixels.begin(), b.pixels.end(),
-                 [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }))
-    return true;
+// Writes <name>-a.png, <name>-b.png and <name>-diff.png (|a - b| x 16, tone-free) into
+// $SSRLAB_TEST_OUT (default: the system's temporary directory); returns "<dir>/<name>-{a,b,diff}.png".
+inline std::string write_image_pair(const RgbaImageF& a, const RgbaImageF& b, const std::string& name) {
   namespace fs = std::filesystem;
   const char* env = std::getenv("SSRLAB_TEST_OUT");
   const fs::path dir = env && *env ? fs::path(env) : fs::temp_directory_path();
@@ -105,8 +100,33 @@ inline bool expect_same_image(const RgbaImageF& a, const RgbaImageF& b, const st
   write_png(dir / (file + "-b.png"), to8(b, [&](std::size_t i) { return b.pixels[i]; }));
   if (a.pixels.size() == b.pixels.size())
     write_png(dir / (file + "-diff.png"), to8(a, [&](std::size_t i) { return std::abs(a.pixels[i] - b.pixels[i]) * 16.0f; }));
-  ADD_FAILURE() << name << ": the images differ; written " << (dir / (file + "-{a,b,diff}.png")).string();
+  return (dir / (file + "-{a,b,diff}.png")).string();
+}
+
+// Whether two float images are the same bit for bit. When not, the test fails and the pair is
+// written (write_image_pair) and named in the failure.
+inline bool expect_same_image(const RgbaImageF& a, const RgbaImageF& b, const std::string& name) {
+  if (a.width == b.width && a.height == b.height &&
+      std::equal(a.pixels.begin(), a.pixels.end(), b.pixels.begin(), b.pixels.end(),
+                 [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }))
+    return true;
+  ADD_FAILURE() << name << ": the images differ; written " << write_image_pair(a, b, name);
   return false;
+}
+
+// Images a test scored (a technique's frame and its truth), kept until the test ends: when it
+// fails, gl_test_main.cpp writes each pair (write_image_pair), so a failing threshold test
+// leaves the pictures behind too (Falcor's habit).
+struct NotedImages {
+  std::string name;
+  RgbaImageF a, b;
+};
+inline std::vector<NotedImages>& noted_images() {
+  static std::vector<NotedImages> v;
+  return v;
+}
+inline void note_images_for_failure(std::string name, const RgbaImageF& a, const RgbaImageF& b) {
+  noted_images().push_back({std::move(name), a, b});
 }
 
 // The same for 8-bit images (display images): compared as they are, written as they are.

@@ -1,5 +1,7 @@
 #include "tracer_test_util.h"
 
+#include "gl_test_env.h"
+
 #include <map>
 #include <memory>
 #include <tuple>
@@ -44,6 +46,9 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
   t->load(slot->renderer->shaders());
   TracerScore s;
   ScoredFrame::Score score = slot->frame->score(*t);
+  std::string name = scene + "-" + std::to_string(w) + "x" + std::to_string(h) + "-" + technique;
+  for (const std::string& a : assignments) name += "-" + a.substr(a.find('.') + 1);
+  note_images_for_failure(name, score.display, slot->frame->truth());  // written if the test fails
   s.error = score.error;
   s.breakdown = std::move(score.breakdown);
   return s;
