@@ -125,7 +125,8 @@ void Viewer::handle_input(double dt) {
   const bool near_edge = panel_shown_ && std::abs(static_cast<float>(mouse.x) - image_w) < 5.0f && mouse.y < image_h;
   if (near_edge && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) resizing_panel_ = true;
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) resizing_panel_ = false;
-  if (resizing_panel_) panel_w_ = io.DisplaySize.x - static_cast<float>(mouse.x);
+  // Dragged: at least 200 px of panel and 64 of image.
+  if (resizing_panel_) panel_w_ = std::clamp(io.DisplaySize.x - static_cast<float>(mouse.x), 200.0f, std::max(200.0f, io.DisplaySize.x - 64.0f));
   // The split divider (image coordinates: the image starts at the window's left edge).
   const float divider_x = split_ * image_w;
   const bool near_divider = compare_ == CompareSplit && over_image && std::abs(static_cast<float>(mouse.x) - divider_x) < 6.0f;
@@ -151,7 +152,8 @@ void Viewer::layout() {
   window_->framebuffer_size(&fb_w_, &fb_h_);
   const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
   const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
-  panel_w_ = std::clamp(panel_w_, 200.0f, std::max(200.0f, io.DisplaySize.x - 64.0f));
+  // Only a drag narrows the image (handle_input): a --size image keeps its size exactly.
+  panel_w_ = std::min(panel_w_, io.DisplaySize.x);
   image_w_ = std::max(0, fb_w_ - (panel_shown_ ? static_cast<int>(std::lround(panel_w_ * sx)) : 0));
   image_h_ = std::max(0, fb_h_ - static_cast<int>(std::lround(kStatusH * sy)));
 }
