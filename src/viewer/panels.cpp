@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <glm/glm.hpp>
 #include <imgui.h>
@@ -233,6 +234,8 @@ bool draw_camera_panel(Camera& c) {
 
 namespace {
 
+const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
+
 ImU32 rgb(glm::vec3 c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x, c.y, c.z, 1.0f)); }
 
 // A 64-step colour bar over the available width, then "0 ... full+ unit" under it.
@@ -328,6 +331,94 @@ void draw_pixel_values(const nlohmann::json& values) {
     for (const auto& [k, v] : s.items())
       if (k != "technique" && k != "current") line(k, v);
   }
+}
+
+StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
+  StatusActions act;
+  if (ImGui::SmallButton(panel_shown ? "panel >" : "< panel")) act.toggle_panel = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("show or hide the side panel (F2)");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("keys")) act.toggle_keys = true;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys and mouse (F1)");
+  char right[256];
+  const std::string truth = line.truth.empty() ? "" : "truth: " + line.truth + "  |  ";
+  std::snprintf(right, sizeof right, "%sframe %.1f ms (%s)  |  %s", truth.c_str(), line.frame_ms,
+                line.gpu ? "gpu timers" : "cpu clock", line.device.c_str());
+  const float right_w = ImGui::CalcTextSize(right).x;
+  ImGui::SameLine();
+  const float msg_w = ImGui::GetContentRegionAvail().x - right_w - 12.0f;
+  if (msg_w > 20 && !line.message.empty()) {
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImGui::PushClipRect(p, ImVec2(p.x + msg_w, p.y + ImGui::GetTextLineHeight()), true);
+    ImGui::TextColored(line.error ? kErrorColour : ImVec4(0.8f, 0.9f, 0.8f, 1), "%s", line.message.c_str());
+    ImGui::PopClipRect();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", line.message.c_str());
+    ImGui::SameLine();
+  }
+  ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), ImGui::GetWindowWidth() - right_w - 8.0f));
+  ImGui::TextDisabled("%s", right);
+  return act;
+}
+
+void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
+                 bool gpu) {
+  const std::size_t n = columns.size();
+  std::vector<std::string> passes;
+  std::vector<double> total(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const auto& p : columns[i].passes) {
+      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
+      total[i] += p.ms;
+    }
+  if (n > 0 && ImGui::BeginTable("passes", static_cast<int>(1 + 2 * n), ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
+    for (const TimingColumn& c : columns) {
+      ImGui::TableSetupColumn((c.label + " ms").c_str());
+      ImGui::TableSetupColumn("%");
+    }
+    ImGui::TableHeadersRow();
+    auto row = [&](const std::string& name, auto&& ms_of) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(name.c_str());
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::optional<double> ms = ms_of(i);
+        ImGui::TableNextColumn();
+        if (ms) ImGui::Text("%.3f", *ms);
+        ImGui::TableNextColumn();
+        if (ms && total[i] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[i]);
+      }
+    };
+    for (const std::string& pass : passes)
+      row(pass, [&](std::size_t i) -> std::optional<double> {
+        for (const auto& p : columns[i].passes)
+          if (p.name == pass) return p.ms;
+        return std::nullopt;
+      });
+    row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
+    ImGui::EndTable();
+  }
+  const float plot_w = std::max(ImGui::GetContentRegionAvail().x, 60.0f);  // ImGui 1.86 draws nothing for -1
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::vector<float>& h = columns[i].history;
+    if (h.empty()) continue;
+    const float hi = *std::max_element(h.begin(), h.end());
+    char overlay[128];
+    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms %s (max %.3f)", columns[i].label.c_str(),
+                  columns[i].technique.c_str(), h.back(), gpu ? "gpu" : "cpu", hi);
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1e-3f),
+                     ImVec2(plot_w, 45));
+    ImGui::PopID();
+  }
+  if (!frame_ms.empty()) {
+    const float hi = *std::max_element(frame_ms.begin(), frame_ms.end());
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame %.1f ms (wall clock)", last_frame_ms);
+    ImGui::PlotLines("##frame", frame_ms.data(), static_cast<int>(frame_ms.size()), 0, overlay, 0.0f,
+                     std::max(hi * 1.2f, 1.0f), ImVec2(plot_w, 45));
+  }
+  if (!gpu) ImGui::TextDisabled("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
 }
 
 }  // namespace ssr

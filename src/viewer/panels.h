@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gl/timer.h"
 #include "render/views.h"
 #include "scene/scene.h"
 #include "core/params.h"
@@ -37,6 +38,33 @@ bool draw_camera_panel(Camera& camera);
 void draw_view_legend(const ViewInfo& view, float exposure);
 void draw_difference_legend(float full_scale);
 void draw_class_legend();
+
+// The status bar's line: two toggles (panel, keys), the latest message (errors red, clipped to
+// the room left, whole in a tooltip), then the truth's state, the frame time and the device.
+struct StatusLine {
+  std::string message;
+  bool error = false;
+  std::string truth;     // "" (no on-demand side), "current", "stale", "computing"
+  double frame_ms = 0;
+  bool gpu = false;      // GPU timers, else the CPU clock
+  std::string device;
+};
+struct StatusActions {
+  bool toggle_panel = false, toggle_keys = false;
+};
+StatusActions draw_status_line(const StatusLine& line, bool panel_shown);
+
+// The timing panel: per pass each column's ms and % of its frame (the union of the columns'
+// passes, then the total), each column's rolling technique time and the frame time as plots
+// the width of the panel; the header says gpu or cpu.
+struct TimingColumn {
+  std::string label;      // "A", "B", "truth"
+  std::string technique;
+  gl::FrameTimes passes;  // the last frame's
+  std::vector<float> history;  // technique ms of the last frames
+};
+void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
+                 bool gpu);
 
 // The pixel inspector's values (viewer/inspector.h's JSON): one line a value, then per side.
 void draw_pixel_values(const nlohmann::json& values);

@@ -280,28 +280,11 @@ void Viewer::status_bar(double dt) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
   ImGui::Begin("##status", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
-  if (ImGui::SmallButton(panel_shown_ ? "panel >" : "< panel")) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("show or hide the side panel (F2)");
-  ImGui::SameLine();
-  if (ImGui::SmallButton("keys")) help_shown_ = !help_shown_;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys and mouse (F1)");
-  char right[256];
-  const std::string truth = truth_state() == "none" ? "" : "truth: " + truth_state() + "  |  ";
-  std::snprintf(right, sizeof right, "%sframe %.1f ms (%s)  |  %s", truth.c_str(), dt * 1000.0,
-                clock_ == gl::PassTimer::Clock::Gpu ? "gpu timers" : "cpu clock", window_->info().renderer.c_str());
-  const float right_w = ImGui::CalcTextSize(right).x;
-  ImGui::SameLine();
-  const float msg_w = ImGui::GetContentRegionAvail().x - right_w - 12.0f;
-  if (msg_w > 20 && !status_.empty()) {
-    const ImVec2 p = ImGui::GetCursorScreenPos();
-    ImGui::PushClipRect(p, ImVec2(p.x + msg_w, p.y + ImGui::GetTextLineHeight()), true);
-    ImGui::TextColored(status_error_ ? ImVec4(1, 0.45f, 0.4f, 1) : ImVec4(0.8f, 0.9f, 0.8f, 1), "%s", status_.c_str());
-    ImGui::PopClipRect();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", status_.c_str());
-    ImGui::SameLine();
-  }
-  ImGui::SetCursorPosX(std::max(ImGui::GetCursorPosX(), io.DisplaySize.x - right_w - 8.0f));
-  ImGui::TextDisabled("%s", right);
+  StatusLine line{status_, status_error_, truth_state() == "none" ? "" : truth_state(), dt * 1000.0,
+                  clock_ == gl::PassTimer::Clock::Gpu, window_->info().renderer};
+  const StatusActions act = draw_status_line(line, panel_shown_);
+  if (act.toggle_panel) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
+  if (act.toggle_keys) help_shown_ = !help_shown_;
   ImGui::End();
   ImGui::PopStyleVar(2);
 }
@@ -604,67 +587,14 @@ void Viewer::time_panel() {
 // Per-pass times of the last frame of each side (ms and % of that side's frame), the
 // technique's rolling plot and the frame time. Labelled `gpu` or `cpu` (llvmpipe: CPU clock).
 void Viewer::timing_panel(double dt) {
-  const bool gpu = clock_ == gl::PassTimer::Clock::Gpu;
-  const char* clock_name = gpu ? "gpu" : "cpu";
-  const int n = active_sides();
-  std::vector<std::string> passes;
-  std::vector<double> total(static_cast<std::size_t>(n), 0.0);
-  for (int i = 0; i < n; ++i)
-    for (const auto& p : sides_[i].last_times) {
-      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
-      total[static_cast<std::size_t>(i)] += p.ms;
-    }
-  if (ImGui::BeginTable("passes", 1 + 2 * n, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-    ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
-    for (int i = 0; i < n; ++i) {
-      ImGui::TableSetupColumn(i == 0 ? "A ms" : i == 1 ? "B ms" : "truth ms");
-      ImGui::TableSetupColumn("%");
-    }
-    ImGui::TableHeadersRow();
-    auto row = [&](const std::string& name, auto&& ms_of) {
-      ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name.c_str());
-      for (int i = 0; i < n; ++i) {
-        const std::optional<double> ms = ms_of(i);
-        ImGui::TableNextColumn();
-        if (ms) ImGui::Text("%.3f", *ms);
-        ImGui::TableNextColumn();
-        if (ms && total[static_cast<std::size_t>(i)] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[static_cast<std::size_t>(i)]);
-      }
-    };
-    for (const std::string& pass : passes)
-      row(pass, [&](int i) -> std::optional<double> {
-        for (const auto& p : sides_[i].last_times)
-          if (p.name == pass) return p.ms;
-        return std::nullopt;
-      });
-    row("total", [&](int i) -> std::optional<double> { return total[static_cast<std::size_t>(i)]; });
-    ImGui::EndTable();
-  }
-  const float plot_w = ImGui::GetContentRegionAvail().x;  // a positive width: 1.86 draws nothing for -1
-  for (int i = 0; i < n; ++i) {
+  std::vector<TimingColumn> columns;
+  for (int i = 0; i < active_sides(); ++i) {
     const Side& s = sides_[i];
-    if (s.history.empty()) continue;
-    const std::vector<float> h(s.history.begin(), s.history.end());
-    const float hi = *std::max_element(h.begin(), h.end());
-    char overlay[128];
-    std::snprintf(overlay, sizeof overlay, "%s %s: %.3f ms %s (max %.3f)", side_key(i), s.technique->name().c_str(),
-                  h.back(), clock_name, hi);
-    ImGui::PushID(i);
-    ImGui::PlotLines("##technique", h.data(), static_cast<int>(h.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1e-3f),
-                     ImVec2(plot_w, 45));
-    ImGui::PopID();
+    columns.push_back({i == 0 ? "A" : i == 1 ? "B" : "truth", s.technique->name(), s.last_times,
+                       std::vector<float>(s.history.begin(), s.history.end())});
   }
-  if (!frame_ms_.empty()) {
-    const std::vector<float> f(frame_ms_.begin(), frame_ms_.end());
-    const float hi = *std::max_element(f.begin(), f.end());
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "frame %.1f ms (wall clock)", dt * 1000.0);
-    ImGui::PlotLines("##frame", f.data(), static_cast<int>(f.size()), 0, overlay, 0.0f, std::max(hi * 1.2f, 1.0f),
-                     ImVec2(plot_w, 45));
-  }
-  if (!gpu) ImGui::TextDisabled("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
+  draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), dt * 1000.0,
+              clock_ == gl::PassTimer::Clock::Gpu);
 }
 
 // A frame with only a progress bar over the last image: long CPU work (the reference) calls it.

@@ -1,7 +1,8 @@
-// The legends and the inspector's value list under Dear ImGui's null backend: every view's
-// legend draws the colours its image is drawn with (heat and grey bars from shared/colormap.h,
-// each swatch), views without a scale draw no bar, and the pixel values list draws one line a
-// value and a block per side.
+// The viewer's panels added with the rebuilt viewer, under Dear ImGui's null backend: every
+// view's legend draws the colours its image is drawn with (heat and grey bars from
+// shared/colormap.h, each swatch), views without a scale draw no bar; the pixel values list
+// draws one line a value and a block per side; the status line's toggles act and an error is
+// red; the timing table has a row per pass plus the total and its plots are drawn.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -97,6 +98,57 @@ TEST(Legends, PixelValuesOneLineEach) {
   });
   // One more value line and two sides (a heading and their values): at least 6 more lines.
   EXPECT_GT(ui.bottom() - short_list, 6 * ImGui::GetTextLineHeight());
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+TEST(StatusLine, TogglesActAndErrorsAreRed) {
+  ImGuiHarness ui;
+  StatusLine line{"shader error: render/lighting.comp:12: syntax", true, "stale", 12.5, false, "llvmpipe"};
+  StatusActions act;
+  ImGuiID panel = 0, keys = 0;  // as ImGui names the buttons, inside the frame
+  auto draw = [&] {
+    panel = test::item_id({}, "panel >");
+    keys = test::item_id({}, "keys");
+    act = draw_status_line(line, true);
+    return act.toggle_panel || act.toggle_keys;
+  };
+  ui.frame(draw);
+  const ImU32 red = ImGui::ColorConvertFloat4ToU32(ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  EXPECT_TRUE(drawn_colours().count(red)) << "an error is drawn red";
+  line.error = false;
+  ui.frame(draw);
+  EXPECT_FALSE(drawn_colours().count(red));
+  const auto hits = ui.scan(draw);
+  ASSERT_TRUE(hits.count(panel) && hits.count(keys));
+  EXPECT_TRUE(ui.click(hits.at(panel).center(), [&] { return draw_status_line(line, true).toggle_panel; }));
+  EXPECT_TRUE(ui.click(hits.at(keys).center(), [&] { return draw_status_line(line, true).toggle_keys; }));
+  EXPECT_FALSE(ui.click(hits.at(keys).center(), [&] { return draw_status_line(line, true).toggle_panel; }));
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+TEST(Timing, RowPerPassTotalAndVisiblePlots) {
+  ImGuiHarness ui;
+  const std::vector<TimingColumn> columns = {
+      {"A", "hiz", {{"gbuffer", 0.5}, {"trace", 1.5}}, {1.4f, 1.5f, 1.6f}},
+      {"B", "linear", {{"gbuffer", 0.5}, {"march", 3.0}}, {2.9f, 3.0f}},
+  };
+  std::size_t with_plots = 0, without = 0;
+  ui.frame([&] {
+    draw_timing(columns, {16.0f, 17.0f}, 17.0, true);
+    return false;
+  });
+  const ImU32 plot = ImGui::GetColorU32(ImGuiCol_PlotLines);
+  for (int i = 0; i < ImGui::GetDrawData()->CmdListsCount; ++i)
+    for (const ImDrawVert& v : ImGui::GetDrawData()->CmdLists[i]->VtxBuffer) with_plots += v.col == plot;
+  ui.frame([&] {
+    draw_timing({{"A", "hiz", {{"gbuffer", 0.5}}, {}}}, {}, 0.0, false);
+    return false;
+  });
+  for (int i = 0; i < ImGui::GetDrawData()->CmdListsCount; ++i)
+    for (const ImDrawVert& v : ImGui::GetDrawData()->CmdLists[i]->VtxBuffer) without += v.col == plot;
+  // Four line segments (A: 2, B: 1, frame: 1), four vertices each; a negative width drew none.
+  EXPECT_GE(with_plots, 16u) << "the rolling plots draw no lines";
+  EXPECT_EQ(without, 0u);
   EXPECT_TRUE(ui.errors().empty());
 }
 
