@@ -6,6 +6,7 @@
 
 #include <set>
 
+#include "core/cli_common.h"
 #include "registry/presets.h"
 #include "registry/registry.h"
 #include "render/views.h"
@@ -13,15 +14,6 @@
 
 namespace ssr {
 
-namespace {
-
-// A '|' inside a table cell ends it in Markdown.
-std::string cell(std::string s) {
-  for (std::size_t at = 0; (at = s.find('|', at)) != std::string::npos; at += 2) s.insert(at, "\\");
-  return s;
-}
-
-}  // namespace
 
 std::string techniques_markdown() {
   std::string out = "| name | what | parameters |\n|---|---|---|\n";
@@ -36,7 +28,7 @@ std::string techniques_markdown() {
       else own += (own.empty() ? "`" : ", `") + std::string(d.name) + "`";
     }
     for (const std::string& g : groups) own += (own.empty() ? "the " : ", the ") + g;
-    out += "| `" + info.name + "` | " + cell(info.description) + " | " + (own.empty() ? "—" : cell(own)) + " |\n";
+    out += "| `" + info.name + "` | " + markdown_cell(info.description) + " | " + (own.empty() ? "—" : markdown_cell(own)) + " |\n";
   }
   return out;
 }
@@ -59,22 +51,22 @@ std::string parameters_markdown() {
     out += "| parameter | default | range | unit | shared | what |\n|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < p.size(); ++i) {
       const ParamDesc& d = p.table()[i];
-      out += "| `" + std::string(d.name) + "` | `" + cell(p.default_string(i)) + "` | `" + cell(p.range_string(i)) +
-             "` | " + cell(d.unit) + " | " + cell(d.group) + " | " + cell(d.help) + " |\n";
+      out += "| `" + std::string(d.name) + "` | `" + markdown_cell(p.default_string(i)) + "` | `" + markdown_cell(p.range_string(i)) +
+             "` | " + markdown_cell(d.unit) + " | " + markdown_cell(d.group) + " | " + markdown_cell(d.help) + " |\n";
     }
   }
   out += "\n## Presets (`--preset NAME`, the viewer's named presets)\n\n| preset | technique | assignments | source |\n|---|---|---|---|\n";
   for (const Preset& p : presets()) {
     std::string sets;
     for (const auto& a : p.assignments) sets += (sets.empty() ? "`" : " `") + a + "`";
-    out += "| `" + p.name + "` | `" + p.technique + "` | " + cell(sets) + " | " + cell(p.source) + " |\n";
+    out += "| `" + p.name + "` | `" + p.technique + "` | " + markdown_cell(sets) + " | " + markdown_cell(p.source) + " |\n";
   }
   return out;
 }
 
 std::string scenes_markdown() {
   std::string out = "| scene | what (options as `name:key=value,...`) |\n|---|---|\n";
-  for (const BuiltinSceneInfo& s : builtin_scenes()) out += "| `" + s.name + "` | " + cell(s.description) + " |\n";
+  for (const BuiltinSceneInfo& s : builtin_scenes()) out += "| `" + s.name + "` | " + markdown_cell(s.description) + " |\n";
   return out;
 }
 
@@ -97,7 +89,7 @@ std::string views_markdown() {
       case Legend::Encoded: legend = "encoded (see what)"; break;
     }
     const std::string who = v.telemetry ? "iterating techniques (instrumented)" : v.debug ? "techniques that declare it" : "every technique";
-    out += "| `" + std::string(v.name) + "` | " + cell(v.description) + " | " + cell(legend) + " | " + who + " |\n";
+    out += "| `" + std::string(v.name) + "` | " + markdown_cell(v.description) + " | " + markdown_cell(legend) + " | " + who + " |\n";
   }
   return out;
 }

@@ -40,4 +40,9 @@ void require_output_files(const std::vector<std::pair<std::string, std::string>>
   }
 }
 
+std::string markdown_cell(std::string text) {
+  for (std::size_t at = 0; (at = text.find('|', at)) != std::string::npos; at += 2) text.insert(at, "\\");
+  return text;
+}
+
 }  // namespace ssr

@@ -15,6 +15,9 @@ constexpr long long kMaxFramePixels = 1LL << 26;
 // included). The GL's own limit per side is checked once a context is open (open_gl).
 std::pair<int, int> parse_size(const std::string& text);
 
+// `text` made safe for a Markdown table cell: a '|' inside a cell would end it.
+std::string markdown_cell(std::string text);
+
 // Output files: the directory must exist, the path must not be a directory, and no two outputs
 // of one command may be the same file. Pairs of {option, path}, e.g. {"--json", "r.json"};
 // empty paths are skipped.

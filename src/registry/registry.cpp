@@ -79,6 +79,8 @@ std::vector<std::string> oracle_names() {
   return names;
 }
 
+bool is_truth(const std::string& name) { return name == truth_name(); }
+
 const std::string& truth_name() {
   static const std::string name = [] {
     for (const TechniqueInfo& t : technique_registry())

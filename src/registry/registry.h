@@ -28,6 +28,8 @@ const TechniqueInfo& technique_info(const std::string& name);
 std::unique_ptr<Technique> create_technique(const std::string& name);
 // The technique every score is taken against (the one flagged `truth`).
 const std::string& truth_name();
+// Whether `name` is the truth (false for unknown names: no technique's).
+bool is_truth(const std::string& name);
 // The oracles' names (bench leaves them out of its default list: they have no speed to compare).
 std::vector<std::string> oracle_names();
 

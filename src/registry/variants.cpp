@@ -54,13 +54,6 @@ std::vector<std::string> sets_for(const std::string& technique, const std::vecto
   return out;
 }
 
-// The truth's parameters may be set whatever runs (an unknown name is no technique's: false).
-static bool is_truth(const std::string& name) {
-  for (const TechniqueInfo& t : technique_registry())
-    if (t.name == name) return t.truth;
-  return false;
-}
-
 std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
                                     const std::vector<std::string>& sets,
                                     const std::vector<std::string>& sweeps,
@@ -69,7 +62,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   for (const std::string& t : techniques) create_technique(t);  // unknown names throw
   auto check_owner = [&](const std::string& key) {
     const std::string t = technique_of(key);
-    if (!running.count(t) && !is_truth(t))
+    if (!running.count(t) && !is_truth(t))  // the truth's parameters may be set whatever runs
       throw InputError("parameter '" + key + "' belongs to technique '" + t + "', which is not being run.");
   };
   for (const std::string& s : sets) check_owner(split_assignment(s).first);

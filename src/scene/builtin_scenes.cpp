@@ -1369,7 +1369,7 @@ SceneOptions parse_options(const Entry& e, const std::string& full, std::string_
     throw InputError("scene '" + full + "' has nothing after ':'; write " + name +
                      ":key=value[,key=value] with " + help);
   SceneOptions opt;
-  const ParamSet set(name, e.options, &opt, &kDefaultOptions);
+  ParamSet set(name, e.options, &opt, &kDefaultOptions);
   std::vector<std::string> given;
   std::size_t pos = 0;
   while (true) {
@@ -1421,7 +1421,7 @@ SceneOptions parse_options(const Entry& e, const std::string& full, std::string_
                          allowed(d) + ", not '" + value + "'");
       v = static_cast<double>(c - d.choices.begin());
     }
-    ParamSet(set).set(static_cast<std::size_t>(row), v);
+    set.set(static_cast<std::size_t>(row), v);
     if (comma == text.size()) break;
     pos = comma + 1;
   }

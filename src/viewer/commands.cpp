@@ -131,12 +131,9 @@ static_assert([] {
 
 std::string commands_markdown() {
   std::string out = "| command | what it does |\n|---|---|\n";
-  auto cell = [](std::string s) {  // a '|' inside a cell ends it in Markdown
-    for (std::size_t at = 0; (at = s.find('|', at)) != std::string::npos; at += 2) s.insert(at, "\\");
-    return s;
-  };
   for (const CommandInfo& c : kCommands)
-    out += "| `" + cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + cell(c.help) + " |\n";
+    out += "| `" + markdown_cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + markdown_cell(c.help) +
+           " |\n";
   return out;
 }
 

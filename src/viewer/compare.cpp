@@ -53,9 +53,7 @@ bool Viewer::on_demand(int i) const { return technique_info(sides_[i].technique-
 
 // The grid's truth: the registry's truth technique, made when the grid is first shown.
 void Viewer::ensure_grid_truth() {
-  if (compare_ != CompareGrid || sides_[2].technique) return;
-  for (const TechniqueInfo& t : technique_registry())
-    if (t.truth && !sides_[2].technique) set_technique(sides_[2], t.name);
+  if (compare_ == CompareGrid && !sides_[2].technique) set_technique(sides_[2], truth_name());
 }
 
 int Viewer::active_sides() const { return compare_ == CompareOff ? 1 : compare_ == CompareGrid ? 3 : 2; }

@@ -488,10 +488,8 @@ void Viewer::view_panel() {
   if (compare_ != CompareOff) {
     if (ImGui::Button("swap A and B")) ui_command(Verb::Swap);
     ImGui::SameLine();
-    if (ImGui::Button("B is the truth")) {
-      for (const TechniqueInfo& t : technique_registry())
-        if (t.truth && sides_[1].technique->name() != t.name) ui_command(Verb::TechniqueB, t.name);
-    }
+    if (ImGui::Button("B is the truth") && !is_truth(sides_[1].technique->name()))
+      ui_command(Verb::TechniqueB, truth_name());
     if (sides_[0].technique->name() == sides_[1].technique->name()) {
       ImGui::SameLine();
       if (ImGui::Button("A's values to B")) {

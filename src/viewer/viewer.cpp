@@ -53,12 +53,6 @@ std::vector<std::string> scene_choices() {
   return names;
 }
 
-bool is_truth_technique(const std::string& name) {
-  for (const TechniqueInfo& t : technique_registry())
-    if (t.name == name) return t.truth;
-  return false;
-}
-
 int parse_view(const std::string& name) {
   return name == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(name));
 }
@@ -134,11 +128,11 @@ void Viewer::apply_sets(const std::vector<std::string>& sets) {
   for (const std::string& s : sets) {
     const std::string prefix = s.substr(0, s.find('.'));
     const bool for_a = prefix == a.name(), for_b = prefix == b.name();
-    const bool for_truth = !for_a && !for_b && is_truth_technique(prefix);
+    const bool for_truth = !for_a && !for_b && is_truth(prefix);
     if (for_truth) {
       if (!sides_[2].technique || sides_[2].technique->name() != prefix) {
-        sides_[2].technique = create_technique(prefix);
-        if (renderer_) set_technique(sides_[2], prefix);  // with GL: loaded now (else in run())
+        if (renderer_) set_technique(sides_[2], prefix);  // with GL: loaded now
+        else sides_[2].technique = create_technique(prefix);  // before GL: run() loads it
       }
       to_truth.push_back(s);
     }
