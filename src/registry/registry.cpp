@@ -35,7 +35,8 @@ const std::vector<TechniqueInfo>& technique_registry() {
        make_hiz_technique},
       {"ppr",
        "Pixel-Projected Reflections (Kim 2018 after Cichocki 2017): pixels projected across each "
-       "planar reflector with `imageAtomicMin` into an r32ui image, resolved with hole patching; "
+       "planar reflector with `imageAtomicMin` into an r32ui image, resolved with hole patching and "
+       "each pixel's own mirror ray refined on the source's tangent plane; "
        "normal maps and GGX samples by reprojection; `fallback` (default `hiz`) traces the "
        "reflective pixels projection cannot serve (non-planar surfaces, unfilled holes, "
        "normal-mapped rays off the plane's solution), `none` is the thesis's technique",
