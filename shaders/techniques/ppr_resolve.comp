@@ -1,8 +1,9 @@
 // PPR resolve pass: decode each reflector pixel's offset, patch holes from the neighbours, and
 // fetch the reflected colour at the source, refined by the pixel's own mirror ray. It also
-// empties the other intermediate image, the next frame's projection target: no clear pass. With a normal-mapped or rough
-// reflector, the thesis's approximation: keep the reflection distance of the mirror solution
-// and follow the perturbed (or GGX-sampled) reflection vector that far, then reproject.
+// empties the other intermediate image, the next frame's projection target: no clear pass.
+// With a normal-mapped or rough reflector, the thesis's approximation: keep the reflection
+// distance of the mirror solution and follow the perturbed (or GGX-sampled) reflection vector
+// that far, then reproject.
 #include "common/gbuffer.glsl"
 #include "common/ppr_mirror.glsl"
 #include "shared/ppr_packing.h"
