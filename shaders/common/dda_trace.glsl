@@ -92,6 +92,7 @@ TraceResult dda_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   bool armed = origin.z > own_z + 1e-4 * abs(own_z);
   vec3 n = texelFetch(g_normal_roughness, pixel, 0).xyz;
   n = dot(n, n) > 1e-8 ? normalize(n) : vec3(0.0, 0.0, 1.0);
+  uint own = origin_reflector(pixel, origin);
   int prev = FRONT;  // the ray starts on the surface
   for (int i = 0; i < params.max_steps && lo < r.len; ++i, lo = hi, hi += stride) {
     hi = min(hi, r.len);
@@ -117,7 +118,7 @@ TraceResult dda_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
         steps += 1.0;
         f = classify(r, a, b, backfaces, uv);
       }
-      if (f == INSIDE && (armed || !origin_surface(uv, origin, n)))
+      if (f == INSIDE && (armed || !origin_surface(uv, origin, n)) && hittable(ivec2(uv * frame.viewport.xy), own))
         return TraceResult(true, uv, steps, length(ray_view(r, 0.5 * (a + b)) - origin));
     }
     armed = armed || c == FRONT;

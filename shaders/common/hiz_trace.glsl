@@ -20,6 +20,7 @@ struct HizTrace {
   int max_level;       // coarsest level the trace climbs to
   float thickness;     // how far behind the depth buffer still counts as a hit
   bool backfaces;      // the back-face depth bounds the thickness instead
+  uint own_reflector;  // the origin's planar reflector id (0: none), which it cannot hit
 };
 
 // The cell of `level` holding pixel-space point q. The last cell of a row/column also covers an
@@ -117,7 +118,8 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     bool inside = backfaces ? inside_surface(uv, ray_z, h.thickness, true)
                             : !is_background(closest) && ray_z <= view_z_from_depth(closest) &&
                                   view_z_from_depth(closest) - ray_z < h.thickness;
-    if (inside && (was_in_front || dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1))
+    if (inside && (was_in_front || dot(dir, texelFetch(g_normal_roughness, c, 0).xyz) < -0.1) &&
+        hittable(c, h.own_reflector))
       return TraceResult(true, uv, float(i + 1), length(view_position(uv, hit_depth) - origin));
     // Behind by more than the thickness (or on the starting surface): go on past this pixel.
     t = t_exit + cross_t;

@@ -1,11 +1,12 @@
 // The `linear-binary` trace (include-only); the pass (techniques/linear_binary.comp) provides
 // `params` (LinearBinaryParams) and includes common/ssr_common.glsl first.
 
-// Inside the surface seen at p's projection? (false off screen or behind the camera plane)
-bool sample_inside(vec3 p, bool backfaces, out vec2 uv) {
+// Inside a surface the ray may hit, seen at p's projection? (false off screen or behind the
+// camera plane, and on the origin's own reflector)
+bool sample_inside(vec3 p, bool backfaces, uint own, out vec2 uv) {
   float depth;
   if (!project_to_uv(p, uv, depth) || !uv_on_screen(uv)) return false;
-  return inside_surface(uv, p.z, params.thickness, backfaces);
+  return inside_surface(uv, p.z, params.thickness, backfaces) && hittable(ivec2(uv * frame.viewport.xy), own);
 }
 
 TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
@@ -15,13 +16,14 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
   float step = params.max_distance / float(n);
   vec3 prev = origin;
   bool prev_inside = true;  // a hit needs an outside sample first: no hit on the origin surface
+  uint own = origin_reflector(pixel, origin);
   for (int i = 1; i <= n; ++i) {
     vec3 pos = origin + dir * (step * float(i));
     if (pos.z > near_z) return trace_miss(float(i));
     vec2 uv;
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
-    bool inside = inside_surface(uv, pos.z, params.thickness, backfaces);
+    bool inside = sample_inside(pos, backfaces, own, uv);
     if (inside && !prev_inside) {
       // Bisection between the last outside sample (a) and the first inside one (b).
       vec3 a = prev, b = pos;
@@ -29,7 +31,7 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
       for (int k = 0; k < params.binary_steps; ++k) {
         vec3 mid = 0.5 * (a + b);
         vec2 mid_uv;
-        if (sample_inside(mid, backfaces, mid_uv)) {
+        if (sample_inside(mid, backfaces, own, mid_uv)) {
           b = mid;
           b_uv = mid_uv;
         } else {

@@ -10,6 +10,7 @@ TraceResult linear_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   // A hit needs the ray to cross from in front to behind: a ray that starts "behind" its own
   // surface because the depth buffer is quantised per pixel does not hit itself.
   float prev_gap = 1.0;
+  uint own = origin_reflector(pixel, origin);
   for (int i = 1; i <= steps; ++i) {
     vec3 pos = origin + dir * (params.step_size * float(i));
     if (pos.z > near_z) return trace_miss(float(i));  // crossed the near plane
@@ -17,7 +18,8 @@ TraceResult linear_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
     float gap = scene_view_z(uv) - pos.z;  // > 0: the sample is behind the visible surface
-    if (prev_gap <= 0.0 && inside_surface(uv, pos.z, params.thickness, backfaces)) {
+    if (prev_gap <= 0.0 && inside_surface(uv, pos.z, params.thickness, backfaces) &&
+        hittable(ivec2(uv * frame.viewport.xy), own)) {
       vec3 hit = pos;
       if (params.depth_interp != 0) hit = mix(prev, pos, clamp(prev_gap / (prev_gap - gap), 0.0, 1.0));
       vec2 hit_uv;

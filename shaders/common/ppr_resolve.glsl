@@ -36,33 +36,6 @@ bool ppr_patch_hole(ivec2 p, PprReflector r, inout vec2 source) {
   return false;
 }
 
-// The perturbed rays' mean radiance at the mirror solution's reach; false when every one left
-// the screen (the ray left the plane's solution).
-bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 color) {
-  vec2 src_uv = source * frame.viewport.zw;
-  vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
-  float reach = length(hit_vs - g.pos_vs);
-  vec3 v_dir = -normalize(g.pos_vs);
-  int n = rough < 0.01 ? 1 : clamp(params.samples, 1, 16);
-  vec3 sum = vec3(0.0);
-  float found = 0.0;
-  for (int s = 0; s < n; ++s) {
-    vec3 dir = reflect(-v_dir, g.n_vs);  // the G-buffer normal carries the normal map
-    if (rough >= 0.01) {
-      vec3 l = sample_reflection(g.n_vs, v_dir, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(params.seed)));
-      if (dot(l, g.n_vs) > 0.0) dir = l;
-    }
-    vec2 uv;
-    float depth;
-    if (project_to_uv(g.pos_vs + dir * reach, uv, depth) && uv_on_screen(uv)) {
-      sum += textureLod(lit_tex, uv, 0.0).rgb;
-      found += 1.0;
-    }
-  }
-  if (found > 0.0) color = sum / found;
-  return found > 0.0;
-}
-
 // The projected source is first order: a magnified source was splatted over its footprint
 // with the Jacobian of its own tangent plane, up to 2 px away and also past the source's
 // outline. This pixel's own mirror ray (origin, dir), intersected with the tangent plane of the
@@ -98,6 +71,33 @@ int ppr_refine(inout vec2 source, vec3 origin, vec3 dir) {
   return PPR_INCONSISTENT;
 }
 
+// The perturbed rays' mean radiance at the mirror solution's reach; false when every one left
+// the screen (the ray left the plane's solution).
+bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 color) {
+  vec2 src_uv = source * frame.viewport.zw;
+  vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
+  float reach = length(hit_vs - g.pos_vs);
+  vec3 v_dir = -normalize(g.pos_vs);
+  int n = rough < 0.01 ? 1 : clamp(params.samples, 1, 16);
+  vec3 sum = vec3(0.0);
+  float found = 0.0;
+  for (int s = 0; s < n; ++s) {
+    vec3 dir = reflect(-v_dir, g.n_vs);  // the G-buffer normal carries the normal map
+    if (rough >= 0.01) {
+      vec3 l = sample_reflection(g.n_vs, v_dir, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(params.seed)));
+      if (dot(l, g.n_vs) > 0.0) dir = l;
+    }
+    vec2 uv;
+    float depth;
+    if (project_to_uv(g.pos_vs + dir * reach, uv, depth) && uv_on_screen(uv)) {
+      sum += textureLod(lit_tex, uv, 0.0).rgb;
+      found += 1.0;
+    }
+  }
+  if (found > 0.0) color = sum / found;
+  return found > 0.0;
+}
+
 PprResolved ppr_resolve(ivec2 p, GSample g) {
   // The source position (continuous pixel coordinates) this pixel reflects.
   uint v = packed_at(p);
@@ -123,6 +123,9 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   vec3 color = texelFetch(lit_tex, ivec2(source), 0).rgb;
   float rough = params.roughness >= 0.0 ? params.roughness : g.roughness;
   bool bumpy = params.normal_maps != 0 && abs(dot(g.n_vs, plane_n)) < 0.99999;
+  // A normal-mapped mirror's rays leave the plane's solution: its reach is a guess that put
+  // ripples 8 dB under hiz (640x360). The fallback traces them; without one, the guess stands.
+  if (bumpy && rough < 0.01 && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
   if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color) && u_fallback == 1)
     return PprResolved(false, vec4(0.0), debug);
   float a = 1.0;

@@ -36,6 +36,20 @@ bool inside_surface(vec2 uv, float ray_z, float thickness, bool use_backfaces) {
   return front - ray_z < thickness;
 }
 
+// The planar reflector a ray from `pixel` starts on (0: none). A plane cannot reflect itself, so
+// the tracers reject hits on it: with a normal map, rays skimming the plane otherwise "hit" it
+// where the depth buffer's steps pass the ray (the false arcs on ripples). A ray that does not
+// start on the depth buffer's surface (refraction: on glass in front of it) starts on no reflector.
+uint origin_reflector(ivec2 pixel, vec3 origin) {
+  float z = scene_view_z(pixel_to_uv(pixel));
+  return abs(origin.z - z) <= 1e-4 * abs(z) ? texelFetch(g_material, pixel, 0).x : 0u;
+}
+
+// Whether the surface at pixel c may be a ray's hit: not the reflector it started on.
+bool hittable(ivec2 c, uint own_reflector) {
+  return own_reflector == 0u || texelFetch(g_material, c, 0).x != own_reflector;
+}
+
 // A per-pixel, per-sample offset in [0, 1) (jittered starts hide banding from fixed strides).
 float pixel_jitter(ivec2 p, int sample_index, int seed) {
   return uint_to_unit(pcg_hash(uint(p.x) * 1973u ^ uint(p.y) * 9277u ^ uint(sample_index) * 26699u ^ uint(seed)));

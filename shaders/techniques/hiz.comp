@@ -8,7 +8,8 @@ layout(std140, binding = UBO_TECHNIQUE) uniform ParamsBlock { HizParams params; 
 
 TraceResult trace_ray(ivec2 pixel, vec3 origin, vec3 dir, float jitter) {
   return hiz_trace(origin, dir, HizTrace(params.max_distance, params.max_iterations, params.start_level,
-                                         params.max_level, params.thickness, params.ray.backface_thickness != 0));
+                                         params.max_level, params.thickness, params.ray.backface_thickness != 0,
+                                         origin_reflector(pixel, origin)));
 }
 
 #include "common/ssr_main.glsl"

@@ -57,7 +57,7 @@ void main() {
     if (dot(l, g.n_vs) <= 0.0) l = reflect(-v, g.n_vs);
     float pdf = reflection_pdf(g.n_vs, v, l, g.roughness);
     TraceResult r = hiz_trace(g.pos_vs, l, HizTrace(params.max_distance, params.max_iterations, 0,
-                                                     params.max_level, params.thickness, false));
+                                                     params.max_level, params.thickness, false, g.reflector));
     vec4 radiance = r.hit ? vec4(hit_radiance(r.uv), 1.0) : vec4(0.0);
     imageStore(out_radiance, t, radiance);
     imageStore(out_ray, t, vec4(l * (r.hit ? r.distance : RAY_MISS_LENGTH), pdf));

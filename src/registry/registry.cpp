@@ -38,8 +38,8 @@ const std::vector<TechniqueInfo>& technique_registry() {
        "planar reflector with `imageAtomicMin` into an r32ui image, resolved with hole patching and "
        "each pixel's own mirror ray refined on the source's tangent plane; "
        "normal maps and GGX samples by reprojection; `fallback` (default `hiz`) traces the "
-       "reflective pixels projection cannot serve (non-planar surfaces, unfilled holes, "
-       "normal-mapped rays off the plane's solution), `none` is the thesis's technique",
+       "reflective pixels projection cannot serve (non-planar surfaces, unfilled holes, rays that "
+       "pass a source's outline, normal-mapped mirror pixels), `none` is the thesis's technique",
        make_ppr_technique},
       {"stochastic",
        "stochastic SSR as engines ship it (Diligent's document, AMD FidelityFX SSSR): tile "

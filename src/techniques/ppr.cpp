@@ -40,7 +40,7 @@ const ParamDesc kTable[] = {
     seed_row(offsetof(P, seed)),
     SSR_PARAM_CHOICE(P, fallback,
                      "Tracer (at its defaults) for the reflective pixels projection cannot serve: non-planar surfaces, "
-                     "unfilled holes, normal-mapped rays that leave the plane's solution; none is the thesis's technique.",
+                     "unfilled holes, rays past a source's outline, normal-mapped mirror pixels; none is the thesis's technique.",
                      "none", "linear", "linear-binary", "dda", "hiz"),
 };
 
