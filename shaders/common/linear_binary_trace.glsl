@@ -15,8 +15,11 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
   int n = max(params.linear_steps, 1);
   float step = params.max_distance / float(n);
   vec3 prev = origin;
-  bool prev_inside = true;  // a hit needs an outside sample first: no hit on the origin surface
+  // A hit needs an outside sample first: no hit on the origin surface. A ray from a planar
+  // reflector cannot hit its own plane (hittable), so there the origin counts as outside and a
+  // surface the first sample already entered (a wall rising from the floor) is hit.
   uint own = origin_reflector(pixel, origin);
+  bool prev_inside = own == 0u;
   for (int i = 1; i <= n; ++i) {
     vec3 pos = origin + dir * (step * float(i));
     if (pos.z > near_z) return trace_miss(float(i));
@@ -24,7 +27,11 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
     bool inside = sample_inside(pos, backfaces, own, uv);
-    if (inside && !prev_inside) {
+    // The first sample hits only a surface the ray crossed, behind the origin's depth: not one
+    // in front of the origin that a thickness of many metres swallows (hard-depth-range's ball
+    // 1 cm from the eye); the ray then stays inside it, as from any other origin.
+    bool crossed = i > 1 || scene_view_z(uv) <= origin.z;
+    if (inside && !prev_inside && crossed) {
       // Bisection between the last outside sample (a) and the first inside one (b).
       vec3 a = prev, b = pos;
       vec2 b_uv = uv;
@@ -38,7 +45,7 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
           a = mid;
         }
       }
-      return TraceResult(true, b_uv, float(i + params.binary_steps), length(b - origin));
+      return TraceResult(true, pixel_centre_uv(b_uv), float(i + params.binary_steps), length(b - origin));
     }
     prev = pos;
     prev_inside = inside;

@@ -50,6 +50,13 @@ bool hittable(ivec2 c, uint own_reflector) {
   return own_reflector == 0u || texelFetch(g_material, c, 0).x != own_reflector;
 }
 
+// The centre of the pixel holding uv. A hit reads the lit image there, as the screen-space ideal
+// does: a bilinear fetch between pixels mixes in what lies beside the hit (at a wall's base, the
+// black mirror floor: a dark line along the junction).
+vec2 pixel_centre_uv(vec2 uv) {
+  return (min(floor(uv * frame.viewport.xy), frame.viewport.xy - 1.0) + 0.5) * frame.viewport.zw;
+}
+
 // A per-pixel, per-sample offset in [0, 1) (jittered starts hide banding from fixed strides).
 float pixel_jitter(ivec2 p, int sample_index, int seed) {
   return uint_to_unit(pcg_hash(uint(p.x) * 1973u ^ uint(p.y) * 9277u ^ uint(sample_index) * 26699u ^ uint(seed)));

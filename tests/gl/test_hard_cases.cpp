@@ -81,7 +81,7 @@ constexpr Tolerance kHardTolerances[] = {
     // hard-depth-range
     {"hard-depth-range", "none", 24.0},             // measured 27.43 dB
     {"hard-depth-range", "linear", 24.5},           // measured 27.43 dB (auto step: see ROBUSTNESS.md)
-    {"hard-depth-range", "linear-binary", 24.5},    // measured 27.43 dB (auto step: see ROBUSTNESS.md)
+    {"hard-depth-range", "linear-binary", 26.0},    // measured 29.35 dB (auto step: see ROBUSTNESS.md)
     {"hard-depth-range", "dda", 34.0},              // measured 37.10 dB
     {"hard-depth-range", "hiz", 34.0},              // measured 37.10 dB
     {"hard-depth-range", "stochastic", 34.0},       // measured 37.10 dB (one frame, no history)
