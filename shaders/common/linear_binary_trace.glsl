@@ -26,7 +26,8 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
     vec2 uv;
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
-    bool inside = sample_inside(pos, backfaces, own, uv);
+    bool inside = inside_surface(uv, pos.z, params.thickness, backfaces) &&
+                  hittable(ivec2(uv * frame.viewport.xy), own);  // not sample_inside: uv is at hand
     // The first sample hits only a surface the ray crossed, behind the origin's depth: not one
     // in front of the origin that a thickness of many metres swallows (hard-depth-range's ball
     // 1 cm from the eye); the ray then stays inside it, as from any other origin.
