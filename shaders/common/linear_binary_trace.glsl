@@ -26,13 +26,19 @@ TraceResult linear_binary_trace(ivec2 pixel, vec3 origin, vec3 dir, float jitter
     vec2 uv;
     float depth;
     if (!project_to_uv(pos, uv, depth) || !uv_on_screen(uv)) return trace_miss(float(i));
-    bool inside = inside_surface(uv, pos.z, params.thickness, backfaces) &&
-                  hittable(ivec2(uv * frame.viewport.xy), own);  // not sample_inside: uv is at hand
+    // Not sample_inside: uv is at hand. The material is fetched only for an inside sample of a
+    // ray from a reflector, in a branch of its own.
+    bool inside = inside_surface(uv, pos.z, params.thickness, backfaces);
+    if (inside && own != 0u) inside = hittable(ivec2(uv * frame.viewport.xy), own);
     // The first sample hits only a surface the ray crossed, behind the origin's depth: not one
     // in front of the origin that a thickness of many metres swallows (hard-depth-range's ball
     // 1 cm from the eye); the ray then stays inside it, as from any other origin.
-    bool crossed = i > 1 || scene_view_z(uv) <= origin.z;
-    if (inside && !prev_inside && crossed) {
+    if (inside && !prev_inside && i == 1 && !(scene_view_z(uv) <= origin.z)) {
+      prev = pos;
+      prev_inside = true;
+      continue;
+    }
+    if (inside && !prev_inside) {
       // Bisection between the last outside sample (a) and the first inside one (b).
       vec3 a = prev, b = pos;
       vec2 b_uv = uv;
