@@ -105,26 +105,25 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   vec2 source = vec2(p) + 0.5 + (hole ? vec2(0.0) : ppr_unpack(v, u_fraction_bits));
   if (hole && params.hole_fill > 0) hole = !ppr_patch_hole(p, reflectors[g.reflector - 1u], source);
   if (hole) return PprResolved(false, vec4(0.0), vec4(0.0, 0.0, 1.0, 1.0));
-  // A normal map tilts the G-buffer normal away from the reflector's plane.
+  // The plane's own normal (a normal map tilts the G-buffer's) gives the mirror ray.
   vec3 plane_n = normalize(mat3(frame.view) * reflectors[g.reflector - 1u].plane.xyz);
-  // A ray that leaves the source's outline into the background has no projected answer, nor
-  // has a patched hole whose borrowed source the ray does not meet (it claimed the sky past
-  // outlines). Another inconsistent source goes to the fallback tracer where that found a hit;
-  // elsewhere (and without a fallback: the thesis's technique) the projection stands. Always
-  // falling back cost corridor's floor 1.5 dB, where hiz misses more than projection does.
   vec2 refined = source;
   int refine = ppr_refine(refined, g.pos_vs, reflect(normalize(g.pos_vs), plane_n));
+  // With a fallback tracer: a ray that leaves the source's outline into the background has no
+  // projected answer; a patched hole keeps its borrowed source only where the refinement holds
+  // and the fallback found a hit too (at an outline the borrowed ray may pass into the sky by a
+  // fraction of a pixel); another inconsistent source goes to the fallback where that found a
+  // hit. Elsewhere (and without a fallback: the thesis's technique) the projection stands:
+  // always falling back cost corridor's floor 1.5 dB, where hiz misses more than projection.
   bool patched = ppr_is_empty(v);
-  // A patched hole keeps its borrowed source only where the fallback tracer also found a hit:
-  // at an outline the borrowed ray may pass by a fraction of a pixel into the sky.
-  if (refine == PPR_REFINED && patched && u_fallback == 1 && !(texelFetch(fallback_tex, p, 0).a > 0.5))
+  bool fallback_hit = u_fallback == 1 && texelFetch(fallback_tex, p, 0).a > 0.5;
+  if (refine == PPR_REFINED && patched && u_fallback == 1 && !fallback_hit)
     refine = PPR_INTO_BACKGROUND;
   if (refine == PPR_REFINED)
     source = refined;
-  else if (u_fallback == 1 &&
-           (refine == PPR_INTO_BACKGROUND || patched || texelFetch(fallback_tex, p, 0).a > 0.5))
+  else if (u_fallback == 1 && (refine == PPR_INTO_BACKGROUND || patched || fallback_hit))
     return PprResolved(false, vec4(0.0), vec4(0.0, 0.0, patched ? 1.0 : 0.0, 1.0));
-  vec4 debug = vec4(source - (vec2(p) + 0.5), ppr_is_empty(v) ? 1.0 : 0.0, 0.0);
+  vec4 debug = vec4(source - (vec2(p) + 0.5), patched ? 1.0 : 0.0, 0.0);
   vec2 src_uv = source * frame.viewport.zw;
   // Nearest, as the ideal reads: a bilinear fetch at an exact source blurs across outlines.
   vec3 color = texelFetch(lit_tex, ivec2(source), 0).rgb;
