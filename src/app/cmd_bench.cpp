@@ -39,6 +39,7 @@ struct BenchOptions {
   int warmup = 5;
   std::string json, csv, plot;
   std::string gl = "auto";
+  std::string shader_dir;  // empty: the embedded shaders
 };
 
 // "720p", "1080p", "1440p", "4k", "8k" or WIDTHxHEIGHT.
@@ -176,8 +177,11 @@ int run_bench(const BenchOptions& o) {
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
+  if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
+    throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
 
   auto ctx = open_gl(o.gl, sizes);
+  const gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   const gl::ContextInfo& gi = ctx->info();
   const std::string clock = gi.software ? "cpu" : "gpu";
   const TimingOptions timing{o.warmup, o.frames, gi.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};
@@ -188,7 +192,7 @@ int run_bench(const BenchOptions& o) {
     std::unique_ptr<Renderer> renderer;
     for (auto [w, h] : sizes) {
       try {
-        if (!renderer) renderer = std::make_unique<Renderer>(scene, w, h);
+        if (!renderer) renderer = std::make_unique<Renderer>(scene, w, h, shaders);
         renderer->resize(w, h);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "ssrlab: skipping %s at %dx%d: %s\n", scene.name.c_str(), w, h, e.what());
@@ -216,7 +220,8 @@ int run_bench(const BenchOptions& o) {
     }
   }
   if (runs.empty()) throw RuntimeError("every scene and size was skipped; nothing was written.");
-  const std::string revision = build_revision();
+  // Shaders loaded from a directory are not the build's: the revision says so.
+  const std::string revision = build_revision() + (o.shader_dir.empty() ? "" : " (shaders from " + o.shader_dir + ")");
   if (!o.json.empty()) write_text_file_atomic(o.json, bench_json({gi.renderer, gi.version, clock}, revision, runs).dump(2) + "\n");
   if (!o.csv.empty()) write_text_file_atomic(o.csv, results_csv(runs));
   if (!o.plot.empty() && !runs.empty()) write_plots(o, runs, variants, clock);
@@ -242,6 +247,8 @@ Command add_bench_command(CLI::App& app) {
   c->add_option("--csv", o->csv, "Results CSV.");
   c->add_option("--plot", o->plot, "Error-vs-time SVG; sweep and resolution plots go beside it.");
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--shaders", o->shader_dir,
+                "Load shaders from this directory instead of the embedded copy (to time another revision's).");
   return {c, [o] { return run_bench(*o); }};
 }
 

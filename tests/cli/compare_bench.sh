@@ -11,6 +11,9 @@ trap 'rm -rf "$tmp"' EXIT
   --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
 "$SSRLAB" compare --scene glass --size 64x36 --frames 1 --out "$tmp/glass.png" --set reference.samples=4
+# Shaders from a directory (another revision's, to time it): the JSON's revision says so.
+"$SSRLAB" bench --scenes gallery --sizes 32x18 --techniques linear --set reference.samples=4 --frames 1 --warmup 0 \
+  --shaders "$(cd "$(dirname "$0")/../../shaders" && pwd)" --json "$tmp/bench_shaders.json" >/dev/null
 
 python3 - "$tmp" <<'PY'
 import json, math, os, sys
@@ -49,6 +52,9 @@ assert thesis["params"]["linear.max_steps"] == 128 and thesis["params"]["linear.
 
 b = json.load(open(f"{tmp}/bench.json"))
 assert {"device", "revision", "runs"} <= b.keys()
+assert "shaders from" not in b["revision"], b["revision"]
+bs = json.load(open(f"{tmp}/bench_shaders.json"))
+assert "(shaders from " in bs["revision"] and bs["runs"][0]["results"][0]["technique"] == "linear", bs["revision"]
 assert len(b["runs"]) == 4, len(b["runs"])          # 2 scenes x 2 sizes
 for i, run in enumerate(b["runs"]):
     check_run(run, f"bench run {i}", with_device=False)

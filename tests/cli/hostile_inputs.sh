@@ -265,6 +265,7 @@ bad "directory" compare $S --out "$out/x.png" --json "$in/dir.json"
 mkdir -p "$in/dir.svg"; bad "directory" bench --json "$out/b.json" --plot "$in/dir.svg"
 bad "same file" compare $S --out "$out/x.png" --json "$out/x.png"
 bad "same file" bench --json "$out/b.json" --csv "$out/./b.json"
+bad "shader directory" bench --shaders "$in/no-such-dir" --json "$out/b.json"
 
 # compare and bench refuse bad scenes the same way, before writing anything.
 bad 4000000000 compare --scene "$in/huge_index.obj" $S --out "$out/x.png" --json "$out/r.json"
