@@ -39,7 +39,7 @@ const std::vector<TechniqueInfo>& technique_registry() {
        "each pixel's own mirror ray refined on the source's tangent plane; "
        "normal maps and GGX samples by reprojection; `fallback` (default `hiz`) traces the "
        "reflective pixels projection cannot serve (non-planar surfaces, unfilled holes, rays that "
-       "pass a source's outline, normal-mapped mirror pixels), `none` is the thesis's technique",
+       "pass a source's outline or meet a nearer surface first, normal-mapped mirror pixels), `none` is the thesis's technique",
        make_ppr_technique},
       {"stochastic",
        "stochastic SSR as engines ship it (Diligent's document, AMD FidelityFX SSSR): tile "
