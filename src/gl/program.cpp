@@ -1,5 +1,7 @@
 #include "gl/program.h"
 
+#include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -124,6 +126,27 @@ ShaderObject compile(const ShaderSource& src, GLenum stage, const std::string& p
   return sh;
 }
 
+// With $SSRLAB_PROGRAM_BINARIES naming a directory, each linked program's driver binary is
+// written there as <path>-<n>.bin (n counts links: defines make variants of one path). NVIDIA's
+// holds its assembly as text (`strings`): the way to see why two shaders that do the same work
+// differ in time (RESULTS.md, linear-binary's slowdown). Diagnostics only: failures are silent.
+void dump_binary(GLuint prog, const std::string& what) {
+  const char* dir = std::getenv("SSRLAB_PROGRAM_BINARIES");
+  if (!dir || !*dir) return;
+  static int count = 0;
+  GLint len = 0;
+  glGetProgramiv(prog, GL_PROGRAM_BINARY_LENGTH, &len);
+  if (len <= 0) return;
+  std::vector<char> data(static_cast<std::size_t>(len));
+  GLenum format = 0;
+  glGetProgramBinary(prog, len, nullptr, &format, data.data());
+  std::string name = what;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
+  std::ofstream(std::string(dir) + "/" + name + "-" + std::to_string(count++) + ".bin", std::ios::binary)
+      .write(data.data(), static_cast<std::streamsize>(data.size()));
+}
+
 void link(GLuint prog, const std::string& what) {
   glLinkProgram(prog);
   GLint ok = 0;
@@ -135,6 +158,7 @@ void link(GLuint prog, const std::string& what) {
     glGetProgramInfoLog(prog, len, nullptr, log.data());
     throw RuntimeError("program link failed: " + what + "\n" + log.c_str());
   }
+  dump_binary(prog, what);
 }
 
 }  // namespace
