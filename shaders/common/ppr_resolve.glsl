@@ -47,19 +47,31 @@ bool ppr_patch_hole(ivec2 p, PprReflector r, inout vec2 source) {
 // against the ideal, 640x360: 33.51 / 26.16 / 33.60 dB for gallery / corridor / pedestal with
 // one width, 33.56 / 26.13 / 34.12 with two). `hit_t`: the ray parameter of the last plane met.
 const int PPR_REFINED = 0, PPR_INTO_BACKGROUND = 1, PPR_INCONSISTENT = 2;
+
+// Where the ray origin + t dir meets the tangent plane of the surface the G-buffer holds at
+// pixel s (x: that surface point); where the ray grazes the plane, t is the ray's distance to
+// x's foot. False on the background.
+bool ppr_tangent_plane(ivec2 s, vec3 origin, vec3 dir, out vec3 x, out float t, out bool grazing) {
+  float depth = texelFetch(g_depth, s, 0).r;
+  if (is_background(depth)) return false;
+  x = view_position(pixel_to_uv(s), depth);
+  vec3 n = texelFetch(g_normal_roughness, s, 0).xyz;
+  float denom = dot(dir, n);
+  grazing = abs(denom) < 1e-3 * length(n);
+  t = grazing ? dot(x - origin, dir) : dot(x - origin, n) / denom;
+  return true;
+}
+
 int ppr_refine(inout vec2 source, vec3 origin, vec3 dir, out float hit_t) {
   hit_t = 0.0;
   for (int i = 0; i < 3; ++i) {
     ivec2 s = clamp(ivec2(source), ivec2(0), ivec2(frame.viewport.xy) - 1);
-    float depth = texelFetch(g_depth, s, 0).r;
-    if (is_background(depth)) return PPR_INTO_BACKGROUND;
-    vec3 x = view_position(pixel_to_uv(s), depth);
-    vec3 n = texelFetch(g_normal_roughness, s, 0).xyz;
-    float denom = dot(dir, n);
-    hit_t = dot(x - origin, dir);
-    if (abs(denom) < 1e-3 * length(n)) return PPR_REFINED;  // grazing: keep the projected source
-    float t = dot(x - origin, n) / denom;
+    vec3 x;
+    float t;
+    bool grazing;
+    if (!ppr_tangent_plane(s, origin, dir, x, t, grazing)) return PPR_INTO_BACKGROUND;
     hit_t = t;
+    if (grazing) return PPR_REFINED;  // keep the projected source
     vec2 uv;
     float d;
     if (!(t > 0.0) || !project_to_uv(origin + dir * t, uv, d)) return PPR_INCONSISTENT;
@@ -95,12 +107,10 @@ bool ppr_nearer_surface_beside(ivec2 p, vec2 source, vec3 origin, vec3 dir, floa
     vec2 other = vec2(p + dirs[i]) + 0.5 + ppr_unpack(w, u_fraction_bits);
     if (distance(other, source) < 2.0) continue;  // the same stretch of surface
     ivec2 s = clamp(ivec2(other), ivec2(0), ivec2(frame.viewport.xy) - 1);
-    float depth = texelFetch(g_depth, s, 0).r;
-    if (is_background(depth)) continue;
-    vec3 x = view_position(pixel_to_uv(s), depth);
-    vec3 n = texelFetch(g_normal_roughness, s, 0).xyz;
-    float denom = dot(dir, n);
-    float t = abs(denom) < 1e-3 * length(n) ? dot(x - origin, dir) : dot(x - origin, n) / denom;
+    vec3 x;
+    float t;
+    bool grazing;
+    if (!ppr_tangent_plane(s, origin, dir, x, t, grazing)) continue;
     vec2 uv;
     float d;
     if (t > 0.0 && t < 0.98 * hit_t && project_to_uv(origin + dir * t, uv, d) &&
