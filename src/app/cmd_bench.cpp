@@ -177,11 +177,9 @@ int run_bench(const BenchOptions& o) {
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
-  if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
-    throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
+  const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
 
   auto ctx = open_gl(o.gl, sizes);
-  const gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   const gl::ContextInfo& gi = ctx->info();
   const std::string clock = gi.software ? "cpu" : "gpu";
   const TimingOptions timing{o.warmup, o.frames, gi.software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu};

@@ -103,13 +103,11 @@ int run_render(const RenderOptions& o) {
   if (reference) apply_assignments(*reference, reference_sets);
   FrameSettings settings;
   set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
-  if (!o.shader_dir.empty() && !fs::is_directory(o.shader_dir))
-    throw InputError("shader directory '" + o.shader_dir + "' does not exist.");
+  const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
   if (hits_view && technique_info(technique_name).truth)
     throw InputError("--view hit-classes scores a technique against the reference; name another technique.");
 
   auto ctx = open_gl(o.gl, {{w, h}});
-  gl::ShaderSource shaders = o.shader_dir.empty() ? gl::ShaderSource() : gl::ShaderSource(fs::path(o.shader_dir));
   Renderer renderer(scene, w, h, shaders);
   renderer.settings = settings;
   // The telemetry views show what an instrumented build of the technique recorded.

@@ -18,6 +18,12 @@ namespace ssr::gl {
 
 ShaderSource::ShaderSource(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {}
 
+ShaderSource ShaderSource::from_option(const std::string& dir) {
+  if (dir.empty()) return ShaderSource();
+  if (!std::filesystem::is_directory(dir)) throw InputError("shader directory '" + dir + "' does not exist.");
+  return ShaderSource(std::filesystem::path(dir));
+}
+
 ShaderSource ShaderSource::with_defines(std::vector<std::string> defines) const {
   ShaderSource out = *this;
   out.defines_.insert(out.defines_.end(), defines.begin(), defines.end());

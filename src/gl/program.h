@@ -19,6 +19,9 @@ class ShaderSource {
  public:
   // Embedded copy (default) or, with a directory, files read from disk on every load.
   explicit ShaderSource(std::optional<std::filesystem::path> dir = std::nullopt);
+  // A `--shaders DIR` option's source: the embedded copy for "", else that directory; throws
+  // InputError when it is not one (before any GL work: nothing half-done).
+  static ShaderSource from_option(const std::string& dir);
   // A copy whose every program also gets `defines` (e.g. SSR_TELEMETRY: an instrumented build).
   ShaderSource with_defines(std::vector<std::string> defines) const;
   // The text of one file; throws RuntimeError when it does not exist.
