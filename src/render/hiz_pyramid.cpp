@@ -35,7 +35,9 @@ void HizPyramid::build(const gl::Texture2D& depth) {
   // depth buffer as level 0 and writes level 0 too. A 1x1 chain: its one level is both the copy
   // and the "reduction" of a 1x1 footprint.
   glBindImageTexture(IMG_REFRACTION, texture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-  for (int s = 0; s == 0 || s + 1 < levels;) {
+  const auto size = [&](int level) { return sizes[static_cast<std::size_t>(level)]; };
+  int s = 0;
+  do {
     const bool first = s == 0;
     const int l1 = std::min(s + 1, levels - 1);
     const bool two = s + 2 < levels;
@@ -44,7 +46,6 @@ void HizPyramid::build(const gl::Texture2D& depth) {
     glProgramUniform1i(prog, 0, s);
     glProgramUniform1i(prog, 1, first ? 1 : 0);
     glProgramUniform1i(prog, 2, two ? 1 : 0);
-    const auto size = [&](int level) { return sizes[static_cast<std::size_t>(level)]; };
     glProgramUniform2i(prog, 3, size(s).first, size(s).second);
     glProgramUniform2i(prog, 4, size(l1).first, size(l1).second);
     glProgramUniform2i(prog, 5, size(l2).first, size(l2).second);
@@ -57,8 +58,7 @@ void HizPyramid::build(const gl::Texture2D& depth) {
     // The next dispatch (and the trace) fetch these levels.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     s += two ? 2 : 1;
-    if (levels == 1) break;
-  }
+  } while (s + 1 < levels);
   glBindTextureUnit(TEX_HIZ, texture_.id());  // for the trace
 }
 
