@@ -23,9 +23,11 @@ struct HizTrace {
   uint own_reflector;  // the origin's planar reflector id (0: none), which it cannot hit
 };
 
-// The cell of `level` holding pixel-space point q. The last cell of a row/column also covers an
-// odd source's extra texel, hence the clamp (matches the pyramid's footprints).
-ivec2 hiz_cell(vec2 q, int level, ivec2 size) { return min(ivec2(floor(q / float(1 << level))), size - 1); }
+// The cell of `level` holding pixel-space point q + nudge. The last cell of a row/column also
+// covers an odd source's extra texel, hence the clamp (matches the pyramid's footprints).
+ivec2 hiz_cell(vec2 q, vec2 nudge, int level, ivec2 size) {
+  return clamp(ivec2(floor((q + nudge) / float(1 << level))), ivec2(0), size - 1);
+}
 
 // Ray parameter where the ray o + t d (inv_d = 1 / d, no zero components) leaves cell c.
 float cell_exit(vec2 o, vec2 inv_d, ivec2 c, int level, ivec2 size) {
@@ -64,13 +66,18 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
   vec2 inv_d = 1.0 / dxy;
   // Step this far past a cell boundary (0.01 pixel) so the next lookup lands in the next cell.
   float cross_t = 0.01 / max(abs(dxy.x), abs(dxy.y));
+  // And look cells up 0.01 pixel ahead on each axis: a ray nearly parallel to one axis leaves a
+  // cell through the other axis' boundary by far less than a float can add to q there (at
+  // x = 632, 6e-5 pixel), so q stayed on the old side, the cell's exit came out at t again and
+  // the ray stalled until the iteration cap (the trace's tail: most of its time on corridor).
+  vec2 nudge = sign(dxy) * 0.01;
 
   int top = clamp(h.max_level, 0, textureQueryLevels(hiz_tex) - 1);
   int level = clamp(h.start_level, 0, top);
   ivec2 size0 = textureSize(hiz_tex, 0);
   // Start one cell away, where the ray leaves the origin's pixel; no hit on the starting surface
   // (see the level-0 test).
-  float t = cell_exit(o.xy, inv_d, hiz_cell(o.xy, 0, size0), 0, size0) + cross_t;
+  float t = cell_exit(o.xy, inv_d, hiz_cell(o.xy, vec2(0.0), 0, size0), 0, size0) + cross_t;
   bool was_in_front = false;
   int i = 0;
   for (; i < h.max_iterations; ++i) {
@@ -78,7 +85,7 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     if (t >= 1.0 || any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, res))) break;
     // The mip chain halves with floor; textureSize with a per-lane lod is wrong on llvmpipe.
     ivec2 size = max(size0 >> level, ivec2(1));
-    ivec2 c = hiz_cell(q, level, size);
+    ivec2 c = hiz_cell(q, nudge, level, size);
     float t_exit = min(cell_exit(o.xy, inv_d, c, level, size), 1.0);
     vec2 bounds = texelFetch(hiz_tex, c, level).rg;
     float closest = bounds.x;
