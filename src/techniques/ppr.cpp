@@ -40,7 +40,8 @@ const ParamDesc kTable[] = {
     seed_row(offsetof(P, seed)),
     SSR_PARAM_CHOICE(P, fallback,
                      "Tracer (at its defaults) for the reflective pixels projection cannot serve: non-planar surfaces, "
-                     "unfilled holes, rays past a source's outline, normal-mapped mirror pixels; none is the thesis's technique.",
+                     "unfilled holes, rays past a source's outline, normal-mapped mirror pixels, glossy rays whose "
+                     "approximated point lies off the surface; none is the thesis's technique.",
                      "none", "linear", "linear-binary", "dda", "hiz"),
 };
 
