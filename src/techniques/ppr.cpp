@@ -41,7 +41,8 @@ const ParamDesc kTable[] = {
     SSR_PARAM_CHOICE(P, fallback,
                      "Tracer (at its defaults) for the reflective pixels projection cannot serve: non-planar surfaces, "
                      "unfilled holes, rays past a source's outline, normal-mapped mirror pixels, glossy rays whose "
-                     "approximated point lies off the surface; none is the thesis's technique.",
+                     "approximated point lies off the surface, reflectors of roughness 0.35 and more; none is the "
+                     "thesis's technique.",
                      "none", "linear", "linear-binary", "dda", "hiz"),
 };
 
