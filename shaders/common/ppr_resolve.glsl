@@ -8,6 +8,12 @@
 // `packed_at(q)` (the packed value at q, PPR_EMPTY off screen), `reflectors[]`, `lit_tex`.
 #include "shared/sampling.h"
 
+// With a fallback tracer, where the thesis's approximation for rough reflectors is replaced
+// (measured on ramp's bands and corridor's glossy floor; see ppr_resolve()):
+const float PPR_FALLBACK_ROUGHNESS = 0.35;  // from this roughness the fallback answers, hit or miss
+const float PPR_OFF_SURFACE = 0.02;         // an approximated point this far off the depth buffer
+                                            // (a share of its depth) is off the surface
+
 struct PprResolved {
   bool served;      // false: projection has no answer here (the pass asks its fallback)
   vec4 reflection;  // rgb radiance, a confidence
@@ -126,8 +132,7 @@ bool ppr_nearer_surface_beside(ivec2 p, vec2 source, vec3 origin, vec3 dir, floa
 
 // The perturbed rays' mean radiance at the mirror solution's reach; false when every one left
 // the screen (the ray left the plane's solution). `off_surface`: a ray's point at that reach
-// lies off the depth buffer's surface there (by more than 2% of its depth), so the ray itself
-// goes elsewhere.
+// lies off the depth buffer's surface there (PPR_OFF_SURFACE), so the ray itself goes elsewhere.
 bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 color, out bool off_surface) {
   vec2 src_uv = source * frame.viewport.zw;
   vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
@@ -149,7 +154,7 @@ bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 colo
     if (project_to_uv(at, uv, depth) && uv_on_screen(uv)) {
       sum += textureLod(lit_tex, uv, 0.0).rgb;
       found += 1.0;
-      off_surface = off_surface || abs(scene_view_z(uv) - at.z) > 0.02 * abs(at.z);
+      off_surface = off_surface || abs(scene_view_z(uv) - at.z) > PPR_OFF_SURFACE * abs(at.z);
     }
   }
   if (found > 0.0) color = sum / found;
@@ -198,7 +203,7 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   // Rough reflectors spread their rays too far from the mirror solution for its reach to say
   // where they go: the fallback answers them, hit or miss (ramp's bands, 1080p, llvmpipe: the
   // approximation ahead of hiz up to roughness 0.3, behind from 0.4 by 0.1 to 1.2 dB).
-  if (rough >= 0.35 && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
+  if (rough >= PPR_FALLBACK_ROUGHNESS && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
   bool off_surface = false;
   if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color, off_surface) && u_fallback == 1)
     return PprResolved(false, vec4(0.0), debug);
