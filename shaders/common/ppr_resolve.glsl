@@ -192,9 +192,6 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   else if (u_fallback == 1 && (refine == PPR_INTO_BACKGROUND || patched || fallback_hit))
     return PprResolved(false, vec4(0.0), vec4(0.0, 0.0, patched ? 1.0 : 0.0, 1.0));
   vec4 debug = vec4(source - (vec2(p) + 0.5), patched ? 1.0 : 0.0, 0.0);
-  vec2 src_uv = source * frame.viewport.zw;
-  // Nearest, as the ideal reads: a bilinear fetch at an exact source blurs across outlines.
-  vec3 color = texelFetch(lit_tex, ivec2(source), 0).rgb;
   float rough = params.roughness >= 0.0 ? params.roughness : g.roughness;
   bool bumpy = params.normal_maps != 0 && abs(dot(g.n_vs, plane_n)) < 0.99999;
   // A normal-mapped mirror's rays leave the plane's solution: its reach is a guess that put
@@ -204,6 +201,8 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   // where they go: the fallback answers them, hit or miss (ramp's bands, 1080p, llvmpipe: the
   // approximation ahead of hiz up to roughness 0.3, behind from 0.4 by 0.1 to 1.2 dB).
   if (rough >= PPR_FALLBACK_ROUGHNESS && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
+  // Nearest, as the ideal reads: a bilinear fetch at an exact source blurs across outlines.
+  vec3 color = texelFetch(lit_tex, ivec2(source), 0).rgb;
   bool off_surface = false;
   if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color, off_surface) && u_fallback == 1)
     return PprResolved(false, vec4(0.0), debug);
@@ -213,6 +212,6 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   // 4K, llvmpipe, hiz 27.27; taking the fallback on every glossy pixel: pedestal's floor -0.2.)
   if (off_surface && fallback_hit) return PprResolved(false, vec4(0.0), debug);
   float a = 1.0;
-  if (params.edge_fade != 0) a *= edge_fade(src_uv);
+  if (params.edge_fade != 0) a *= edge_fade(source * frame.viewport.zw);
   return PprResolved(true, vec4(color, a), debug);
 }
