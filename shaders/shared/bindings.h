@@ -65,12 +65,13 @@
 #define IMG_OUT 0               // the running pass's main output
 #define IMG_OUT2 1              // its second output (techniques: the debug image)
 #define IMG_REFRACTION 2        // techniques write the refracted radiance of transparent pixels here
-                                // (the Hi-Z pyramid's build, before them, borrows it for level 0)
 #define IMG_PPR_INTERMEDIATE 3  // ppr: r32ui; project: written with imageAtomicMin; resolve: the other one, cleared to PPR_EMPTY
 #define IMG_MOTION 4            // the lighting pass writes the background's motion vectors
 #define IMG_REF_TRUTH 5         // reference: the truth's reflection
 #define IMG_REF_IDEAL 6         // reference: the screen-space ideal
 #define IMG_DIFF_OUT 7          // viewer difference pass: the heat map
+#define IMG_HIZ_LEVELS 0        // the Hi-Z pyramid's build, before the techniques bind theirs, borrows
+                                // units 0..HIZ_LEVELS_PER_DISPATCH (shared/hiz.h) for the levels it writes
 
 // G-buffer material flags (TEX_MATERIAL.z)
 #define MATERIAL_FLAG_REFLECTIVE 1u

@@ -4,7 +4,9 @@
 #pragma once
 #include "shared/ray_options.h"
 
-// The depth pyramid's texture unit. bindings.h is the home of named slots; 11 is free there.
+// Levels the pyramid's build writes per dispatch (render/hiz_pyramid.comp): a work group of 16x16
+// reduces a 32x32 source footprint to one texel, so a 1080p chain takes 2 dispatches.
+#define HIZ_LEVELS_PER_DISPATCH 5
 
 SSR_SHARED_BEGIN
 

@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "shared/bindings.h"
+#include "shared/hiz.h"
 
 namespace ssr {
 
@@ -31,33 +32,31 @@ void HizPyramid::build(const gl::Texture2D& depth) {
   assert(static_cast<int>(sizes.size()) == levels);
   const GLuint prog = program_.id();
   glUseProgram(prog);
-  // Each dispatch reads level s and writes s+1 and s+2 (hiz_pyramid.comp); the first reads the
-  // depth buffer as level 0 and writes level 0 too. A 1x1 chain: its one level is both the copy
-  // and the "reduction" of a 1x1 footprint.
-  glBindImageTexture(IMG_REFRACTION, texture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-  const auto size = [&](int level) { return sizes[static_cast<std::size_t>(level)]; };
+  const auto size = [&](int level) { return sizes[static_cast<std::size_t>(std::min(level, levels - 1))]; };
+  // Each dispatch reads level s and writes s+1..s+n (hiz_pyramid.comp); the first reads the depth
+  // buffer as level 0 and writes level 0 too. A 1x1 chain: its one level is both the copy and
+  // the "reduction" of a 1x1 footprint.
   int s = 0;
   do {
     const bool first = s == 0;
-    const int l1 = std::min(s + 1, levels - 1);
-    const bool two = s + 2 < levels;
-    const int l2 = two ? s + 2 : l1;
+    const int n = std::max(1, std::min(HIZ_LEVELS_PER_DISPATCH, levels - 1 - s));
     glBindTextureUnit(TEX_HIZ, first ? depth.id() : texture_.id());
     glProgramUniform1i(prog, 0, s);
     glProgramUniform1i(prog, 1, first ? 1 : 0);
-    glProgramUniform1i(prog, 2, two ? 1 : 0);
-    glProgramUniform2i(prog, 3, size(s).first, size(s).second);
-    glProgramUniform2i(prog, 4, size(l1).first, size(l1).second);
-    glProgramUniform2i(prog, 5, size(l2).first, size(l2).second);
-    glBindImageTexture(IMG_OUT, texture_.id(), l1, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    glBindImageTexture(IMG_OUT2, texture_.id(), l2, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    // A group: 4x4 texels of level s+2 (and the 8x8 of s+1 under them), or 8x8 of s+1 alone.
-    const int per = two ? 4 : 8;
-    const auto [gw, gh] = size(two ? l2 : l1);
-    glDispatchCompute(static_cast<GLuint>((gw + per - 1) / per), static_cast<GLuint>((gh + per - 1) / per), 1);
+    glProgramUniform1i(prog, 2, n);
+    for (int j = 0; j <= HIZ_LEVELS_PER_DISPATCH; ++j) {
+      // Units past level s+n get the last level written: bound, never stored to.
+      const int level = std::min(s + j, std::min(s + n, levels - 1));
+      glProgramUniform2i(prog, 3 + j, size(level).first, size(level).second);
+      glBindImageTexture(IMG_HIZ_LEVELS + j, texture_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    }
+    // A group per texel of level s+n (its footprint: 2^n x 2^n texels of level s, or up to the
+    // level's end in an axis's last group).
+    const auto [gw, gh] = size(s + n);
+    glDispatchCompute(static_cast<GLuint>(gw), static_cast<GLuint>(gh), 1);
     // The next dispatch (and the trace) fetch these levels.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    s += two ? 2 : 1;
+    s += n;
   } while (s + 1 < levels);
   glBindTextureUnit(TEX_HIZ, texture_.id());  // for the trace
 }

@@ -16,13 +16,14 @@ std::vector<std::pair<int, int>> hiz_level_sizes(int w, int h);
 
 // RG32F pyramid with a full mip chain: level 0 = the depth buffer (in both channels), level
 // k+1 = the max (reversed-Z: closest; r) and the min (farthest; g) over each texel's level-k
-// footprint. Two levels per dispatch (the first also copies the depth buffer).
+// footprint. Up to HIZ_LEVELS_PER_DISPATCH levels per dispatch (the first also copies the depth
+// buffer).
 class HizPyramid {
  public:
   // Builds the program (shaders/render/hiz_pyramid.comp); throws on a compile error.
   void load(const gl::ShaderSource& src);
   // Rebuilds every level from a D32F/R32F depth texture (reallocating on a size change) and
-  // leaves the pyramid bound at TEX_HIZ. Binds IMG_OUT, IMG_OUT2 and IMG_REFRACTION.
+  // leaves the pyramid bound at TEX_HIZ. Binds image units IMG_HIZ_LEVELS.. (shared/bindings.h).
   void build(const gl::Texture2D& depth);
   const gl::Texture2D& texture() const { return texture_; }
 

@@ -85,11 +85,13 @@ void check_pyramid(int w, int h) {
 }  // namespace
 
 // Every level of pyramids of random depths, bit for bit: 1921x1081 has odd sizes at most levels
-// (1081 -> 540 -> 270 -> 135 -> 67 -> 33 -> 16 ...), so the 3-texel footprints are exercised;
-// the small ones end the two-levels-per-dispatch build on one level, on a 1-texel axis and on
-// the 1x1 chain (its only level is the copy).
+// (1081 -> 540 -> 270 -> 135 -> 67 -> 33 -> 16 ...), so the 3-texel footprints are exercised,
+// and its first dispatch's last groups run to the level's end; the others end a five-levels-per-
+// dispatch build on fewer levels, on a 1-texel axis, on exact powers of two (no last group
+// longer than the others) and on the 1x1 chain (its only level is the copy).
 TEST(Hiz, PyramidMatchesCpuMaxReduction) {
-  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1921, 1081}, {1, 1}, {1, 7}, {13, 1}, {3, 3}, {37, 22}, {2, 5}})
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{
+           {1921, 1081}, {1, 1}, {1, 7}, {13, 1}, {3, 3}, {37, 22}, {2, 5}, {64, 64}, {4096, 3}, {33, 1023}})
     check_pyramid(w, h);
   test::expect_no_gl_errors();
 }
