@@ -44,6 +44,8 @@ void main() {
   ivec2 t = ivec2(gl_GlobalInvocationID.xy);
   bool traces, listed;
   classify_texel(t, traces, listed);
+  // The ray list costs a word per texel and two global atomics per tile: only when asked for.
+  listed = listed && params.list_rays != 0;
   uint slot = 0u;
   if (traces) tile_traces = true;
   if (listed) slot = atomicAdd(group_rays, 1u);

@@ -21,7 +21,7 @@ struct ClassifyParams {
   int divisor;                // 1: a trace texel per pixel; 2: per 2x2 block (half resolution)
   ivec4 trace_size;           // xy: the trace grid's size; zw: this frame's pixel of a 2x2 block
   int list_glass SSR_DEFAULT(0);  // 1: pixels behind a transparent surface join the ray list (they refract)
-  int pad0 SSR_DEFAULT(0);
+  int list_rays SSR_DEFAULT(1);   // 1: the ray list is built too (a tracer's `compact`); 0: the tile list alone
   int pad1 SSR_DEFAULT(0);
   int pad2 SSR_DEFAULT(0);
 };

@@ -30,6 +30,7 @@ void TileClassifier::classify_for_tracer(int width, int height, shared::Classify
   gl::ScopedPass pass(timer, "classify");
   p.divisor = 1;
   p.trace_size = {width, height, 0, 0};
+  p.list_rays = 1;  // the trace runs over the ray list
   prepare({width, height}, p);
   tracer_program_.dispatch_2d(width, height);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |

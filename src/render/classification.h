@@ -19,8 +19,8 @@ class TileClassifier {
  public:
   void load(const gl::ShaderSource& src);
   // Classifies every pixel of a frame whose G-buffer is bound (FrameContext), writing `classes`
-  // (R8, full resolution) and the tile list. `p.trace_size` and the frame offset are filled in
-  // here from `divisor` and `frame_index`.
+  // (R8, full resolution), the tile list and, with `p.list_rays`, the ray list. `p.trace_size`
+  // and the frame offset are filled in here from `divisor` and `frame_index`.
   void classify(const gl::Texture2D& classes, shared::ClassifyParams p, int frame_index, gl::PassTimer* timer);
   // For a screen-space tracer's own trace (full resolution, no class image): lists the pixels
   // `p` traces (and, with list_glass, those behind glass) and writes, for every other pixel,

@@ -94,7 +94,8 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
                                    .quad_roughness = p.quad_roughness,
                                    .rays_per_quad = 1 << p.rays_per_quad,  // the choice 0, 1, 2 is 1, 2, 4 rays
                                    .divisor = divisor(),
-                                   .trace_size = {}};
+                                   .trace_size = {},
+                                   .list_rays = 0};  // the trace runs over the tile list
     classifier_.classify(*tex[Denoiser::kClass], c, in.time.index, in.timer);
     {
       gl::ScopedPass pass(in.timer, "trace");

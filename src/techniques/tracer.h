@@ -66,9 +66,10 @@ class TracerTechnique : public TechniqueWithParams<P> {
       classifier_loaded_ = true;
     }
     // Every reflective pixel traces (and every pixel behind glass refracts): the classification
-    // at threshold 1, one ray a pixel.
+    // at threshold 1, one ray a pixel; the ray list only for a compact trace.
     const shared::ClassifyParams every_pixel{.roughness_threshold = 1.0f, .quad_roughness = 1.0f, .rays_per_quad = 4,
-                                             .divisor = 1, .trace_size = {}, .list_glass = 1};
+                                             .divisor = 1, .trace_size = {}, .list_glass = 1,
+                                             .list_rays = compact ? 1 : 0};
     auto trace = [&] {
       gl::ScopedPass pass(in.timer, this->name());
       this->bind_params(&p);
