@@ -53,11 +53,11 @@ void group_range(int j, out ivec2 lo, out ivec2 count) {
 }
 
 void main() {
-  const int tid = int(gl_LocalInvocationIndex);
+  const int tid = int(gl_LocalInvocationIndex), threads = int(gl_WorkGroupSize.x * gl_WorkGroupSize.y);
   ivec2 lo, count;
   group_range(1, lo, count);
   // Level k+1 from the source.
-  for (int i = tid; i < count.x * count.y; i += 256) {
+  for (int i = tid; i < count.x * count.y; i += threads) {
     ivec2 q = ivec2(i % count.x, i / count.x), p = lo + q;
     ivec2 s_lo = 2 * p, s_hi = footprint_hi(p, u_size[1], u_size[0]);
     vec2 m = vec2(-1e30, 1e30);
@@ -87,7 +87,7 @@ void main() {
     ivec2 src_lo = lo;
     group_range(j, lo, count);
     int from = j & 1, to = from ^ 1;  // level k+1 is in tile[0]
-    for (int i = tid; i < count.x * count.y; i += 256) {
+    for (int i = tid; i < count.x * count.y; i += threads) {
       ivec2 q = ivec2(i % count.x, i / count.x), p = lo + q;
       ivec2 s_lo = 2 * p - src_lo, s_hi = footprint_hi(p, u_size[j], u_size[j - 1]) - src_lo;
       vec2 m = vec2(-1e30, 1e30);
