@@ -144,12 +144,12 @@ int run_render(const RenderOptions& o) {
     write_exr(o.out, renderer.read_linear());
   }
 
-  double total = 0;
+  const gl::FrameTimes& times = timer.completed().back();
+  const double total = gl::outer_ms(times);
   std::string passes;
-  for (const auto& p : timer.completed().back()) {
-    total += p.ms;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " %s %.2f", p.name.c_str(), p.ms);
+  for (const auto& p : times) {
+    char buf[96];  // the technique span's passes inside brackets
+    std::snprintf(buf, sizeof buf, " %s%s %.2f%s", p.depth > 0 ? "[" : "", p.name.c_str(), p.ms, p.depth > 0 ? "]" : "");
     passes += buf;
   }
   std::printf("wrote %s (%dx%d, scene %s, technique %s, view %s); %s ms %.2f:%s\n",

@@ -144,7 +144,11 @@ std::string pad_right(const std::string& s, std::size_t w) {
 nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 nlohmann::json device_json(const DeviceInfo& d) {
-  return nlohmann::json{{"renderer", d.renderer}, {"version", d.version}, {"clock", d.clock}};
+  // How time_ms was taken (runner.h time_frames): bench JSON of before this method summed one
+  // GL_TIME_ELAPSED query per pass and has no "timing" key.
+  const char* timing = d.clock == "gpu" ? "technique span: two GL_TIMESTAMP queries, none between its passes"
+                                        : "technique span: CPU clock around glFinish";
+  return nlohmann::json{{"renderer", d.renderer}, {"version", d.version}, {"clock", d.clock}, {"timing", timing}};
 }
 
 nlohmann::json error_json(const ErrorMetrics& e) {

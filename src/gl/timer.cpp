@@ -12,57 +12,73 @@ double now_ms() {
 }
 }  // namespace
 
-PassTimer::PassTimer(Clock clock, int ring) : clock_(clock), ring_(static_cast<std::size_t>(ring)) {}
+double outer_ms(const FrameTimes& frame) {
+  double ms = 0;
+  for (const PassTime& p : frame)
+    if (p.depth == 0) ms += p.ms;
+  return ms;
+}
+
+PassTimer::PassTimer(Clock clock, int ring, int max_depth)
+    : clock_(clock), max_depth_(max_depth), ring_(static_cast<std::size_t>(ring)) {}
 
 void PassTimer::collect(Slot& slot) {
   if (!slot.pending) return;
-  FrameTimes frame;
-  for (std::size_t i = 0; i < slot.names.size(); ++i) {
-    double ms = 0;
+  for (std::size_t i = 0; i < slot.passes.size(); ++i) {
     if (clock_ == Clock::Gpu) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(slot.queries[i].id(), GL_QUERY_RESULT, &ns);  // waits if not ready
-      ms = static_cast<double>(ns) * 1e-6;
+      GLuint64 start = 0, end = 0;
+      glGetQueryObjectui64v(slot.queries[2 * i].id(), GL_QUERY_RESULT, &start);  // waits if not ready
+      glGetQueryObjectui64v(slot.queries[2 * i + 1].id(), GL_QUERY_RESULT, &end);
+      slot.passes[i].ms = end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
     } else {
-      ms = slot.cpu_ms[i];
+      slot.passes[i].ms = slot.cpu_end[i] - slot.cpu_start[i];
     }
-    frame.push_back({slot.names[i], ms});
   }
-  completed_.push_back(std::move(frame));
-  slot.names.clear();
-  slot.cpu_ms.clear();
+  completed_.push_back(std::move(slot.passes));
+  slot.passes.clear();
+  slot.cpu_start.clear();
+  slot.cpu_end.clear();
   slot.pending = false;
 }
 
 void PassTimer::begin_frame() {
+  assert(open_.empty() && "PassTimer: a pass is still open");
   current_ = (current_ + 1) % static_cast<int>(ring_.size());
   collect(ring_[static_cast<std::size_t>(current_)]);
 }
 
-void PassTimer::begin(const std::string& pass) {
-  assert(current_ >= 0 && open_ < 0 && "PassTimer: begin_frame first; passes do not nest");
-  Slot& s = ring_[static_cast<std::size_t>(current_)];
-  open_ = static_cast<int>(s.names.size());
-  s.names.push_back(pass);
+void PassTimer::stamp(Slot& s, std::size_t query, std::vector<double>& cpu) {
   if (clock_ == Clock::Gpu) {
-    if (s.queries.size() < s.names.size()) s.queries.emplace_back("pass timer", GL_TIME_ELAPSED);
-    glBeginQuery(GL_TIME_ELAPSED, s.queries[static_cast<std::size_t>(open_)].id());
+    while (s.queries.size() <= query) s.queries.emplace_back("pass timestamp", GL_TIMESTAMP);
+    glQueryCounter(s.queries[query].id(), GL_TIMESTAMP);
   } else {
     glFinish();
-    cpu_start_ = now_ms();
+    cpu.resize(s.passes.size());
+    cpu[query / 2] = now_ms();
   }
 }
 
-void PassTimer::end() {
-  assert(open_ >= 0);
-  Slot& s = ring_[static_cast<std::size_t>(current_)];
-  if (clock_ == Clock::Gpu) {
-    glEndQuery(GL_TIME_ELAPSED);
-  } else {
-    glFinish();
-    s.cpu_ms.push_back(now_ms() - cpu_start_);
+void PassTimer::begin(const std::string& pass) {
+  assert(current_ >= 0 && "PassTimer: begin_frame first");
+  const int depth = static_cast<int>(open_.size());
+  if (depth >= max_depth_) {
+    open_.push_back(-1);
+    return;
   }
-  open_ = -1;
+  Slot& s = ring_[static_cast<std::size_t>(current_)];
+  const int index = static_cast<int>(s.passes.size());
+  s.passes.push_back({pass, 0.0, depth});
+  open_.push_back(index);
+  stamp(s, 2 * static_cast<std::size_t>(index), s.cpu_start);
+}
+
+void PassTimer::end() {
+  assert(!open_.empty());
+  const int index = open_.back();
+  open_.pop_back();
+  if (index < 0) return;
+  Slot& s = ring_[static_cast<std::size_t>(current_)];
+  stamp(s, 2 * static_cast<std::size_t>(index) + 1, s.cpu_end);
 }
 
 void PassTimer::end_frame() {

@@ -14,8 +14,10 @@
 
 namespace ssr {
 
-bool is_frame_pass(std::string_view pass_name) {
-  return std::find(std::begin(kFramePasses), std::end(kFramePasses), pass_name) != std::end(kFramePasses);
+double technique_ms(const gl::FrameTimes& frame) {
+  for (const gl::PassTime& p : frame)
+    if (p.depth == 0 && p.name == kTechniqueSpan) return p.ms;
+  return 0.0;
 }
 
 namespace {
@@ -207,11 +209,14 @@ void Renderer::render(const FrameRequest& request, Technique& technique, ViewMod
                       gl::PassTimer* timer) {
   render_inputs(request, timer);  // G-buffer + motion, lighting (once per frame)
   const TechniqueDecl decl = technique.declare();
-  if (decl.reads & kReadBackDepth) backface_pass(timer);
-  if (decl.reads & kReadHiz) hiz_pass(timer);
   if (decl.reads & (kReadPrevLit | kReadPrevDepth | kReadPrevNormal)) ensure_history();
   TechniqueState& state = technique_state(technique, decl);
-  technique_pass(technique, decl, state, timer);
+  {
+    gl::ScopedPass span(timer, kTechniqueSpan);
+    if (decl.reads & kReadBackDepth) backface_pass(timer);
+    if (decl.reads & kReadHiz) hiz_pass(timer);
+    technique_pass(technique, decl, state, timer);
+  }
   composite_pass(decl.blend, timer);
   display_pass(view, timer);
   if (decl.reads & kReadPrevColor) keep_color(state);

@@ -31,10 +31,13 @@
 namespace ssr {
 
 // The frame's own timed passes: what every technique pays, not part of its time (bench's
-// technique time, the viewer's plots). The inputs a technique declares (back faces, the Hi-Z
-// pyramid) count as its own.
+// technique time, the viewer's plots).
 inline constexpr const char* kFramePasses[] = {"gbuffer", "lighting", "composite", "display"};
-bool is_frame_pass(std::string_view pass_name);
+// The technique's time: one span around everything it costs, the inputs it declares (back
+// faces, the Hi-Z pyramid) and its own passes, which nest inside the span.
+inline constexpr const char* kTechniqueSpan = "technique";
+// The technique span's time in a frame's timings (0 if the frame did not run the technique).
+double technique_ms(const gl::FrameTimes& frame);
 
 // One frame to render: a camera at a time. Consecutive indices (with no cut) carry history.
 struct FrameRequest {

@@ -206,10 +206,7 @@ void Viewer::render() {
     if (!s.timer->completed().empty()) {
       s.last_times = s.timer->completed().back();
       s.timer->completed().clear();
-      double tech = 0;
-      for (const auto& p : s.last_times)
-        if (!is_frame_pass(p.name)) tech += p.ms;
-      s.history.push_back(static_cast<float>(tech));
+      s.history.push_back(static_cast<float>(technique_ms(s.last_times)));
       while (s.history.size() > 120) s.history.pop_front();
     }
   }

@@ -363,12 +363,15 @@ StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
 void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
                  bool gpu) {
   const std::size_t n = columns.size();
-  std::vector<std::string> passes;
+  std::vector<std::string> passes, labels;  // labels: the technique span's passes indented
   std::vector<double> total(n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
     for (const auto& p : columns[i].passes) {
-      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) passes.push_back(p.name);
-      total[i] += p.ms;
+      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) {
+        passes.push_back(p.name);
+        labels.push_back(std::string(2 * static_cast<std::size_t>(p.depth), ' ') + p.name);
+      }
+      if (p.depth == 0) total[i] += p.ms;  // nested passes are inside their span's time
     }
   if (n > 0 && ImGui::BeginTable("passes", static_cast<int>(1 + 2 * n), ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
@@ -389,10 +392,10 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
         if (ms && total[i] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[i]);
       }
     };
-    for (const std::string& pass : passes)
-      row(pass, [&](std::size_t i) -> std::optional<double> {
+    for (std::size_t k = 0; k < passes.size(); ++k)
+      row(labels[k], [&](std::size_t i) -> std::optional<double> {
         for (const auto& p : columns[i].passes)
-          if (p.name == pass) return p.ms;
+          if (p.name == passes[k]) return p.ms;
         return std::nullopt;
       });
     row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });

@@ -373,3 +373,39 @@ TEST(Frame, OptionalResourcesOnlyWhenDeclared) {
   passes_of(probe, 3);
   EXPECT_NE(r.prev_lit(), nullptr);
 }
+
+// The technique is timed as one span (what bench reports) with its own passes nested inside;
+// a timer limited to depth 1 records the outermost passes alone (no query between the
+// technique's passes).
+TEST(Frame, TechniqueIsOneSpanAroundItsPasses) {
+  const Scene s = wall_scene();
+  Renderer r(s, kW, kH);
+  auto hiz = create_technique("hiz");
+  hiz->load(r.shaders());
+  auto frame_times = [&](int max_depth, int index) {
+    gl::PassTimer timer(gl::PassTimer::Clock::Cpu, 4, max_depth);
+    timer.begin_frame();
+    r.render(FrameRequest(s.cameras[0], {index, 0.0f}), *hiz, ViewMode::Final, &timer);
+    timer.end_frame();
+    timer.flush();
+    return timer.completed().back();
+  };
+  const gl::FrameTimes all = frame_times(gl::PassTimer::kAllDepths, 0);
+  std::vector<std::string> outer, inner;
+  double inner_ms = 0;
+  for (const gl::PassTime& p : all) {
+    (p.depth == 0 ? outer : inner).push_back(p.name);
+    if (p.depth == 1) inner_ms += p.ms;
+    EXPECT_LE(p.depth, 1) << p.name;
+  }
+  EXPECT_EQ(outer, (std::vector<std::string>{"gbuffer", "lighting", kTechniqueSpan, "composite", "display"}));
+  EXPECT_NE(std::find(inner.begin(), inner.end(), "hiz pyramid"), inner.end());
+  EXPECT_GE(inner.size(), 2u);  // the pyramid and the trace
+  // The CPU clock stamps the span before its first pass and after its last one.
+  EXPECT_GE(technique_ms(all), inner_ms);
+  const gl::FrameTimes top = frame_times(1, 1);
+  std::vector<std::string> top_names;
+  for (const gl::PassTime& p : top) top_names.push_back(p.name);
+  EXPECT_EQ(top_names, outer);
+  EXPECT_GT(technique_ms(top), 0.0);
+}
