@@ -156,6 +156,9 @@ class Renderer {
   int width_ = 0, height_ = 0;
   GBuffer gbuffer_;
   gl::Texture2D lit_, motion_, reflection_, color_, display_, linear_, debug_, refraction_;
+  // debug_ / refraction_ may hold something other than zeros (technique_pass clears them for a
+  // technique that does not write them).
+  bool debug_dirty_ = true, refraction_dirty_ = true;
   std::optional<History> history_;
   gl::Buffer frame_ubo_;
   gl::Program gbuffer_prog_, glass_prog_, lighting_prog_, composite_prog_, display_prog_;
