@@ -175,13 +175,18 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   std::map<std::string, std::vector<double>> per_pass;
   for (const gl::FrameTimes& frame : frames) {
     std::map<std::string, double> sums;  // a pass name may repeat within a frame
+    double inside = 0;
     for (const gl::PassTime& p : frame) {
       if (p.depth == 0 && p.name == kTechniqueSpan) continue;  // the technique's time, below
       if (!sums.count(p.name) && !per_pass.count(p.name)) order.push_back(p.name);
       sums[p.name] += p.ms;
+      if (p.depth == 1) inside += p.ms;
     }
+    // What the span holds besides its passes: untimed work (clears, copies) and gaps.
+    sums[kBetweenPasses] = std::max(technique_ms(frame) - inside, 0.0);
     for (auto& [name, ms] : sums) per_pass[name].push_back(ms);
   }
+  order.push_back(kBetweenPasses);
   Timing out;
   for (const std::string& name : order) out.passes.push_back({name, time_stats(per_pass[name]).median});
   // A query between passes costs the GPU time of its own; the CPU clock has no such cost (and

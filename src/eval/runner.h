@@ -76,6 +76,9 @@ struct TimingOptions {
   gl::PassTimer::Clock clock = gl::PassTimer::Clock::Gpu;
 };
 
+// The pass that Timing::passes names for the technique span's time outside its timed passes.
+inline constexpr const char* kBetweenPasses = "between passes";
+
 struct Timing {
   TimeStats technique;             // the technique's span (renderer.h kTechniqueSpan)
   std::vector<PassTiming> passes;  // median of every pass of the frame (the span's inside too)
