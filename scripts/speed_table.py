@@ -1,10 +1,24 @@
 #!/usr/bin/env python3
 """Markdown tables of docs/RESULTS.md's "Speed" section from docs/results/speed-<device>.json
-(the parts of scripts/speed_results.sh merged into one file):
+(the parts of scripts/speed_results.sh merged into one file), or from the run's output folder,
+which --write merges into that file first:
     scripts/speed_table.py docs/results/speed-h200.json
+    scripts/speed_table.py OUTDIR --write docs/results/speed-h200.json
 """
 import json
+import os
 import sys
+
+PARTS = ("equal", "compact", "pedestal", "ppr", "ppr16", "scaling")
+
+
+def merged(folder):
+    parts = {n: json.load(open(os.path.join(folder, n + ".json"))) for n in PARTS}
+    first = parts["equal"]
+    return {"device": first["device"], "revision": first["revision"],
+            "command": "scripts/speed_results.sh OUT " + " ".join(p for p in PARTS if p != "ppr16") +
+                       " (through .gpu/run on the GPU machine)",
+            "parts": parts}
 
 
 def ms(r):
@@ -107,7 +121,10 @@ def pass_table(part):
 
 
 def main():
-    d = json.load(open(sys.argv[1]))
+    src = sys.argv[1]
+    d = merged(src) if os.path.isdir(src) else json.load(open(src))
+    if len(sys.argv) == 4 and sys.argv[2] == "--write":
+        json.dump(d, open(sys.argv[3], "w"), indent=1)
     p = d["parts"]
     dev = d["device"]
     print(f"Device: {dev['renderer']}, {dev['version']}, clock `{dev['clock']}`, revision `{d['revision']}`\n")

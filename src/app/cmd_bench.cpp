@@ -240,7 +240,7 @@ Command add_bench_command(CLI::App& app) {
   c->add_option("--sweep", o->sweeps, "technique.key=v1,v2,... (repeatable; sweeps of one technique multiply).");
   c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or 720p, 1080p, 1440p, 4k, 8k.")->capture_default_str();
   c->add_option("--frames", o->frames, "Timed frames per variant.")->capture_default_str();
-  c->add_option("--warmup", o->warmup, "Untimed frames before timing.")->capture_default_str();
+  c->add_option("--warmup", o->warmup, "Untimed frames before timing (on a GPU, more until 0.3 s have passed: the clock comes up).")->capture_default_str();
   c->add_option("--json", o->json, "Results JSON.");
   c->add_option("--csv", o->csv, "Results CSV.");
   c->add_option("--plot", o->plot, "Error-vs-time SVG; sweep and resolution plots go beside it.");

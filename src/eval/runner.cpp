@@ -1,6 +1,7 @@
 #include "eval/runner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 
 #include "core/cli_common.h"
@@ -146,20 +147,46 @@ std::vector<HitClass> ScoredFrame::hit_classes_of(const Score& s, const Techniqu
 }
 
 namespace {
-// Renders warmup + frames frames of a still camera (history carries, as in an application) and
-// returns the timings of the frames after the warm-up.
+// A GPU idle for a while (the reference was computed on the CPU) runs at a low clock for the
+// first frames after: warm-up frames go on for at least this long (on the GPU clock only; the
+// H200 timed a floor pass 0.076 ms instead of 0.028 after 10 warm-up frames).
+constexpr double kGpuWarmupSeconds = 0.3;
+
+// Runs the warm-up: at least o.warmup calls of `frame` (it receives the call's index), and on
+// the GPU clock, with `clock` set, until kGpuWarmupSeconds have passed, `batch` calls between
+// waits (several for a short pass, so the GPU stays busy). Returns the calls made.
+template <typename Frame>
+int warm_up(const TimingOptions& o, bool clock, int batch, Frame&& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  int f = 0;
+  for (; f < o.warmup; ++f) frame(f);
+  if (clock && o.clock == gl::PassTimer::Clock::Gpu) {
+    glFinish();
+    while (seconds() < kGpuWarmupSeconds) {
+      for (int k = 0; k < batch; ++k) frame(f++);
+      glFinish();
+    }
+  }
+  return f;
+}
+
+// Renders the warm-up (warm_clock: long enough for the GPU's clock), then o.frames timed frames
+// of a still camera (history carries, as in an application); returns the timed frames' timings.
 std::vector<gl::FrameTimes> timed_frames(Renderer& renderer, const Camera& camera, Technique& t,
-                                         const TimingOptions& o, int max_depth) {
+                                         const TimingOptions& o, int max_depth, bool warm_clock) {
+  const auto render = [&](int f, gl::PassTimer* timer) {
+    renderer.render(FrameRequest(camera, FrameTime{f + 1, 0.0f}), t, ViewMode::Final, timer);
+  };
+  const int warmed = warm_up(o, warm_clock, 1, [&](int f) { render(f, nullptr); });
   gl::PassTimer timer(o.clock, 4, max_depth);
-  for (int f = 0; f < o.warmup + o.frames; ++f) {
+  for (int f = warmed; f < warmed + o.frames; ++f) {
     timer.begin_frame();
-    renderer.render(FrameRequest(camera, FrameTime{f + 1, 0.0f}), t, ViewMode::Final, &timer);
+    render(f, &timer);
     timer.end_frame();
   }
   timer.flush();
-  std::vector<gl::FrameTimes> frames = std::move(timer.completed());
-  frames.erase(frames.begin(), frames.begin() + std::min<std::ptrdiff_t>(o.warmup, static_cast<std::ptrdiff_t>(frames.size())));
-  return frames;
+  return std::move(timer.completed());
 }
 
 std::vector<double> technique_times(const std::vector<gl::FrameTimes>& frames) {
@@ -170,7 +197,7 @@ std::vector<double> technique_times(const std::vector<gl::FrameTimes>& frames) {
 }  // namespace
 
 Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const TimingOptions& o) {
-  const std::vector<gl::FrameTimes> frames = timed_frames(renderer, camera, t, o, gl::PassTimer::kAllDepths);
+  const std::vector<gl::FrameTimes> frames = timed_frames(renderer, camera, t, o, gl::PassTimer::kAllDepths, true);
   std::vector<std::string> order;
   std::map<std::string, std::vector<double>> per_pass;
   for (const gl::FrameTimes& frame : frames) {
@@ -192,7 +219,7 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   // A query between passes costs the GPU time of its own; the CPU clock has no such cost (and
   // another run on llvmpipe would double the tests' time for nothing).
   out.technique = time_stats(technique_times(
-      o.clock == gl::PassTimer::Clock::Gpu ? timed_frames(renderer, camera, t, o, /*max_depth=*/1) : frames));
+      o.clock == gl::PassTimer::Clock::Gpu ? timed_frames(renderer, camera, t, o, /*max_depth=*/1, /*warm_clock=*/false) : frames));
   return out;
 }
 
@@ -200,22 +227,22 @@ FloorPass::FloorPass(const gl::ShaderSource& shaders)
     : program_(gl::Program::compute(shaders, "eval/floor.comp")) {}
 
 double FloorPass::time(Renderer& renderer, const TimingOptions& o) {
-  gl::PassTimer timer(o.clock);
-  for (int f = 0; f < o.warmup + o.frames; ++f) {
-    timer.begin_frame();
+  const auto pass = [&](gl::PassTimer* timer) {
     renderer.bind_frame_inputs();
-    {
-      gl::ScopedPass pass(&timer, "floor");
-      glBindImageTexture(IMG_OUT, renderer.reflection().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      program_.dispatch_2d(renderer.width(), renderer.height());
-    }
+    gl::ScopedPass timed(timer, "floor");
+    glBindImageTexture(IMG_OUT, renderer.reflection().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    program_.dispatch_2d(renderer.width(), renderer.height());
+  };
+  warm_up(o, true, 16, [&](int) { pass(nullptr); });
+  gl::PassTimer timer(o.clock);
+  for (int f = 0; f < o.frames; ++f) {
+    timer.begin_frame();
+    pass(&timer);
     timer.end_frame();
   }
   timer.flush();
   std::vector<double> ms;
-  const auto& frames = timer.completed();
-  for (std::size_t f = static_cast<std::size_t>(std::max(o.warmup, 0)); f < frames.size(); ++f)
-    ms.push_back(frames[f].empty() ? 0.0 : frames[f][0].ms);
+  for (const gl::FrameTimes& frame : timer.completed()) ms.push_back(frame.empty() ? 0.0 : frame[0].ms);
   return time_stats(ms).median;
 }
 

@@ -84,9 +84,9 @@ struct Timing {
   std::vector<PassTiming> passes;  // median of every pass of the frame (the span's inside too)
 };
 
-// Renders warmup + frames whole frames (inputs, technique, composite) and times every pass. On
-// the GPU it renders them twice: once with a timestamp around each pass (the passes), once with
-// the outermost spans alone (the technique's time, no query between its passes).
+// Renders warm-up and timed whole frames (inputs, technique, composite) and times every pass.
+// On the GPU it renders them twice: once with a timestamp around each pass (the passes), once
+// with the outermost spans alone (the technique's time, no query between its passes).
 Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const TimingOptions& o);
 
 // The floor pass (ARCHITECTURE §6): reads a technique's inputs, writes its output once.
