@@ -247,7 +247,7 @@ double FloorPass::time(Renderer& renderer, const TimingOptions& o) {
 }
 
 EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const Camera& camera,
-                                  const Variant& variant, const TimingOptions& timing, double floor_ms) {
+                                  const Variant& variant, const TimingOptions& timing) {
   auto t = create_technique(variant.technique);
   apply_assignments(*t, variant.assignments);
   t->load(renderer.shaders());
@@ -261,7 +261,6 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.result.params = param_list(*t);
   ev.result.time_ms = tm.technique;
   ev.result.passes = tm.passes;
-  ev.result.floor_ms = floor_ms;
   ev.result.error = ev.score.error;
   ev.result.breakdown = ev.score.breakdown;
   ev.result.telemetry = measure_telemetry(renderer, camera, variant);  // none if it does not iterate

@@ -111,7 +111,7 @@ struct EvaluatedVariant {
   ScoredFrame::Score score;
 };
 EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const Camera& camera,
-                                  const Variant& variant, const TimingOptions& timing, double floor_ms);
+                                  const Variant& variant, const TimingOptions& timing);
 
 // `planar` (its score on `frame`) against the reference: mirror, non-normal-mapped reflector
 // pixels (ARCHITECTURE §5: the two oracles check each other).
