@@ -40,7 +40,12 @@ def check_run(run, where, with_device=True):
         assert 0 <= r["error"]["coverage"] <= 1, where
         assert r["nonfinite"] == 0, f"{where}: {r['technique']} has non-finite values"
         assert all({"name", "ms"} <= p.keys() for p in r["passes"]), where
-        assert r["floor_ms"] >= 0, where
+        # The technique's span (ARCHITECTURE §6): its passes and what lies between them, the
+        # frame's own passes apart; the span is the technique's time and not a pass.
+        names = [p["name"] for p in r["passes"]]
+        assert "between passes" in names and "technique" not in names, f"{where}: {names}"
+        assert all(p["ms"] >= 0 for p in r["passes"]), where
+        assert r["floor_ms"] > 0, where
     return run
 
 c = check_run(json.load(open(f"{tmp}/compare.json")), "compare")
@@ -52,6 +57,7 @@ assert thesis["params"]["linear.max_steps"] == 128 and thesis["params"]["linear.
 
 b = json.load(open(f"{tmp}/bench.json"))
 assert {"device", "revision", "runs"} <= b.keys()
+assert b["device"]["timing"].startswith("technique span"), b["device"]
 assert "shaders from" not in b["revision"], b["revision"]
 bs = json.load(open(f"{tmp}/bench_shaders.json"))
 assert "(shaders from " in bs["revision"] and bs["runs"][0]["results"][0]["technique"] == "linear", bs["revision"]
