@@ -87,6 +87,9 @@ class Renderer {
   const gl::Texture2D& reflection() const { return reflection_; }
   const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: the debug views' channels
   const gl::Texture2D& refraction() const { return refraction_; }  // RGBA16F: radiance, confidence
+  // Whoever writes debug() or refraction() outside a technique says so: the next technique that
+  // does not write them then gets them cleared (technique_pass clears them only when dirty).
+  void outputs_written() { debug_dirty_ = refraction_dirty_ = true; }
   const gl::Texture2D& color() const { return color_; }
   const gl::Texture2D& display() const { return display_; }  // RGBA8 (sRGB values)
   // The previous frame's targets (null until some technique declared them).
