@@ -365,14 +365,23 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
   const std::size_t n = columns.size();
   std::vector<std::string> passes, labels;  // labels: the technique span's passes indented
   std::vector<double> total(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t after = 0;  // rows of this column so far: a pass new to the table goes after them
     for (const auto& p : columns[i].passes) {
-      if (std::find(passes.begin(), passes.end(), p.name) == passes.end()) {
-        passes.push_back(p.name);
-        labels.push_back(std::string(2 * static_cast<std::size_t>(p.depth), ' ') + p.name);
+      auto at = std::find(passes.begin(), passes.end(), p.name);
+      if (at == passes.end()) {
+        // A nested pass goes after the span's rows of the columns before (B's own passes below
+        // A's, all under the technique's span).
+        if (p.depth > 0)
+          while (after < labels.size() && labels[after].starts_with(' ')) ++after;
+        at = passes.insert(passes.begin() + static_cast<std::ptrdiff_t>(after), p.name);
+        labels.insert(labels.begin() + static_cast<std::ptrdiff_t>(after),
+                      std::string(2 * static_cast<std::size_t>(p.depth), ' ') + p.name);
       }
+      after = static_cast<std::size_t>(at - passes.begin()) + 1;
       if (p.depth == 0) total[i] += p.ms;  // nested passes are inside their span's time
     }
+  }
   if (n > 0 && ImGui::BeginTable("passes", static_cast<int>(1 + 2 * n), ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
     ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
     for (const TimingColumn& c : columns) {
