@@ -31,13 +31,12 @@ void PassTimer::collect(Slot& slot) {
       glGetQueryObjectui64v(slot.queries[2 * i + 1].id(), GL_QUERY_RESULT, &end);
       slot.passes[i].ms = end > start ? static_cast<double>(end - start) * 1e-6 : 0.0;
     } else {
-      slot.passes[i].ms = slot.cpu_end[i] - slot.cpu_start[i];
+      slot.passes[i].ms = slot.cpu_ms[2 * i + 1] - slot.cpu_ms[2 * i];
     }
   }
   completed_.push_back(std::move(slot.passes));
   slot.passes.clear();
-  slot.cpu_start.clear();
-  slot.cpu_end.clear();
+  slot.cpu_ms.clear();
   slot.pending = false;
 }
 
@@ -47,14 +46,14 @@ void PassTimer::begin_frame() {
   collect(ring_[static_cast<std::size_t>(current_)]);
 }
 
-void PassTimer::stamp(Slot& s, std::size_t query, std::vector<double>& cpu) {
+void PassTimer::stamp(Slot& s, std::size_t slot) {
   if (clock_ == Clock::Gpu) {
-    while (s.queries.size() <= query) s.queries.emplace_back("pass timestamp", GL_TIMESTAMP);
-    glQueryCounter(s.queries[query].id(), GL_TIMESTAMP);
+    while (s.queries.size() <= slot) s.queries.emplace_back("pass timestamp", GL_TIMESTAMP);
+    glQueryCounter(s.queries[slot].id(), GL_TIMESTAMP);
   } else {
     glFinish();
-    cpu.resize(s.passes.size());
-    cpu[query / 2] = now_ms();
+    if (s.cpu_ms.size() <= slot) s.cpu_ms.resize(slot + 1);
+    s.cpu_ms[slot] = now_ms();
   }
 }
 
@@ -69,7 +68,7 @@ void PassTimer::begin(const std::string& pass) {
   const int index = static_cast<int>(s.passes.size());
   s.passes.push_back({pass, 0.0, depth});
   open_.push_back(index);
-  stamp(s, 2 * static_cast<std::size_t>(index), s.cpu_start);
+  stamp(s, 2 * static_cast<std::size_t>(index));
 }
 
 void PassTimer::end() {
@@ -78,7 +77,7 @@ void PassTimer::end() {
   open_.pop_back();
   if (index < 0) return;
   Slot& s = ring_[static_cast<std::size_t>(current_)];
-  stamp(s, 2 * static_cast<std::size_t>(index) + 1, s.cpu_end);
+  stamp(s, 2 * static_cast<std::size_t>(index) + 1);
 }
 
 void PassTimer::end_frame() {

@@ -45,11 +45,11 @@ class PassTimer {
   struct Slot {
     FrameTimes passes;
     std::vector<Query> queries;  // two per pass: start, end
-    std::vector<double> cpu_start, cpu_end;
+    std::vector<double> cpu_ms;  // the CPU clock's stamps, in the same slots
     bool pending = false;
   };
   void collect(Slot& slot);
-  void stamp(Slot& s, std::size_t query, std::vector<double>& cpu);
+  void stamp(Slot& s, std::size_t slot);
 
   Clock clock_;
   int max_depth_;
