@@ -209,10 +209,7 @@ int run_bench(const BenchOptions& o) {
         if (technique_info(v.technique).oracle && !run.oracles) run.oracles = oracle_agreement(*frame, ev.score);
         ++done;
       }
-      // The floor last: timed straight after a long reference (64 samples on rough scenes) it came
-      // out at 2.4x on the H200 (0.065-0.076 ms against 0.028), while the variants after it did not.
-      const double floor_ms = FloorPass(renderer->shaders()).time(*renderer, timing);
-      for (TechniqueResult& r : run.results) r.floor_ms = floor_ms;
+      time_floor(*renderer, timing, run);  // after the variants (runner.h says why)
       progress(done, total, "");
       std::printf("%s", results_table(run, clock).c_str());
       runs.push_back(std::move(run));

@@ -153,23 +153,21 @@ namespace {
 // H200 timed a floor pass 0.076 ms instead of 0.028 after 10 warm-up frames).
 constexpr double kGpuWarmupSeconds = 0.3;
 
-// Runs the warm-up: at least o.warmup calls of `frame` (it receives the call's index), and on
-// the GPU clock, with `clock` set, until kGpuWarmupSeconds have passed, `batch` calls between
-// waits (several for a short pass, so the GPU stays busy). Returns the calls made.
+// Runs the warm-up: o.warmup calls of `frame`, and on the GPU clock, with `clock` set, more until
+// kGpuWarmupSeconds have passed, `batch` calls between waits (several for a short pass, so the
+// GPU stays busy).
 template <typename Frame>
-int warm_up(const TimingOptions& o, bool clock, int batch, Frame&& frame) {
+void warm_up(const TimingOptions& o, bool clock, int batch, Frame&& frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  int f = 0;
-  for (; f < o.warmup; ++f) frame(f);
+  for (int f = 0; f < o.warmup; ++f) frame();
   if (clock && o.clock == gl::PassTimer::Clock::Gpu) {
     glFinish();
     while (seconds() < kGpuWarmupSeconds) {
-      for (int k = 0; k < batch; ++k) frame(f++);
+      for (int k = 0; k < batch; ++k) frame();
       glFinish();
     }
   }
-  return f;
 }
 
 // Renders the warm-up (warm_clock: long enough for the GPU's clock), then o.frames timed frames
@@ -180,7 +178,7 @@ std::vector<gl::FrameTimes> timed_frames(Renderer& renderer, const Camera& camer
   const auto render = [&](gl::PassTimer* timer) {
     renderer.render(FrameRequest(camera, FrameTime{next++, 0.0f}), t, ViewMode::Final, timer);
   };
-  warm_up(o, warm_clock, 1, [&](int) { render(nullptr); });
+  warm_up(o, warm_clock, 1, [&] { render(nullptr); });
   gl::PassTimer timer(o.clock, 4, max_depth);
   for (int f = 0; f < o.frames; ++f) {
     timer.begin_frame();
@@ -226,6 +224,11 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   return out;
 }
 
+void time_floor(Renderer& renderer, const TimingOptions& o, RunResults& run) {
+  const double ms = FloorPass(renderer.shaders()).time(renderer, o);
+  for (TechniqueResult& r : run.results) r.floor_ms = ms;
+}
+
 FloorPass::FloorPass(const gl::ShaderSource& shaders)
     : program_(gl::Program::compute(shaders, "eval/floor.comp")) {}
 
@@ -236,7 +239,7 @@ double FloorPass::time(Renderer& renderer, const TimingOptions& o) {
     glBindImageTexture(IMG_OUT, renderer.reflection().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
     program_.dispatch_2d(renderer.width(), renderer.height());
   };
-  warm_up(o, true, 16, [&](int) { pass(nullptr); });
+  warm_up(o, true, 16, [&] { pass(nullptr); });
   gl::PassTimer timer(o.clock);
   for (int f = 0; f < o.frames; ++f) {
     timer.begin_frame();

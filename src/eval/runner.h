@@ -100,6 +100,11 @@ class FloorPass {
   gl::Program program_;
 };
 
+// Times the floor pass on the renderer's current inputs and sets every result's floor_ms. Call
+// it after the variants: straight after a long reference (64 samples on rough scenes) the H200
+// timed it at 2.4x (0.065-0.076 ms against 0.028), while the variants after it were not slowed.
+void time_floor(Renderer& renderer, const TimingOptions& o, RunResults& run);
+
 // One frame of the variant with its shaders instrumented (SSR_TELEMETRY): per-ray iterations
 // and idle lanes (render/telemetry.h). None for a technique that records no telemetry.
 std::optional<IterationStats> measure_telemetry(Renderer& renderer, const Camera& camera, const Variant& variant);
