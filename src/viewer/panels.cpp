@@ -363,23 +363,21 @@ StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
 void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
                  bool gpu) {
   const std::size_t n = columns.size();
-  std::vector<std::string> passes, labels;  // labels: the technique span's passes indented
+  std::vector<gl::PassTime> rows;  // each pass once (its name and depth), in the columns' order
   std::vector<double> total(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    std::size_t after = 0;  // rows of this column so far: a pass new to the table goes after them
+    total[i] = gl::outer_ms(columns[i].passes);  // nested passes are inside their span's time
+    auto after = rows.begin();  // a pass new to the table goes after this column's previous row
     for (const auto& p : columns[i].passes) {
-      auto at = std::find(passes.begin(), passes.end(), p.name);
-      if (at == passes.end()) {
+      auto at = std::find_if(rows.begin(), rows.end(), [&](const gl::PassTime& r) { return r.name == p.name; });
+      if (at == rows.end()) {
         // A nested pass goes after the span's rows of the columns before (B's own passes below
         // A's, all under the technique's span).
         if (p.depth > 0)
-          while (after < labels.size() && labels[after].starts_with(' ')) ++after;
-        at = passes.insert(passes.begin() + static_cast<std::ptrdiff_t>(after), p.name);
-        labels.insert(labels.begin() + static_cast<std::ptrdiff_t>(after),
-                      std::string(2 * static_cast<std::size_t>(p.depth), ' ') + p.name);
+          while (after != rows.end() && after->depth > 0) ++after;
+        at = rows.insert(after, p);
       }
-      after = static_cast<std::size_t>(at - passes.begin()) + 1;
-      if (p.depth == 0) total[i] += p.ms;  // nested passes are inside their span's time
+      after = at + 1;
     }
   }
   if (n > 0 && ImGui::BeginTable("passes", static_cast<int>(1 + 2 * n), ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
@@ -401,10 +399,10 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
         if (ms && total[i] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[i]);
       }
     };
-    for (std::size_t k = 0; k < passes.size(); ++k)
-      row(labels[k], [&](std::size_t i) -> std::optional<double> {
+    for (const gl::PassTime& r : rows)
+      row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name, [&](std::size_t i) -> std::optional<double> {
         for (const auto& p : columns[i].passes)
-          if (p.name == passes[k]) return p.ms;
+          if (p.name == r.name) return p.ms;
         return std::nullopt;
       });
     row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
