@@ -229,8 +229,11 @@ void time_floor(Renderer& renderer, const TimingOptions& o, RunResults& run) {
   for (TechniqueResult& r : run.results) r.floor_ms = ms;
 }
 
+// Two pixel rows per invocation: the same traffic in 0.022 ms instead of 0.028 at 1080p and
+// 0.066 instead of 0.086 at 4K (H200; 4 and 8 rows were slower again), so one row per invocation
+// was not the floor. The techniques' passes were slower that way (docs/RESULTS.md).
 FloorPass::FloorPass(const gl::ShaderSource& shaders)
-    : program_(gl::Program::compute(shaders, "eval/floor.comp")) {}
+    : program_(gl::Program::compute(shaders, "eval/floor.comp", {"SSR_ROWS 2"})) {}
 
 double FloorPass::time(Renderer& renderer, const TimingOptions& o) {
   const auto pass = [&](gl::PassTimer* timer) {

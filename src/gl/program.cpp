@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
@@ -181,6 +182,8 @@ Program Program::compute(const ShaderSource& src, const std::string& path,
   glGetProgramiv(p.prog_.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
   p.local_x_ = size[0];
   p.local_y_ = size[1];
+  for (const std::string& d : defines)
+    if (d.rfind("SSR_ROWS ", 0) == 0) p.rows_ = std::max(1, std::stoi(d.substr(9)));
   return p;
 }
 
@@ -201,7 +204,7 @@ Program Program::graphics(const ShaderSource& src, const std::string& vert,
 void Program::dispatch_2d(int w, int h) const {
   glUseProgram(prog_.id());
   glDispatchCompute(static_cast<GLuint>((w + local_x_ - 1) / local_x_),
-                    static_cast<GLuint>((h + local_y_ - 1) / local_y_), 1);
+                    static_cast<GLuint>((h + local_y_ * rows_ - 1) / (local_y_ * rows_)), 1);
 }
 
 }  // namespace ssr::gl

@@ -49,12 +49,15 @@ class Program {
                           const std::string& frag, const std::vector<std::string>& defines = {});
   GLuint id() const { return prog_.id(); }
   explicit operator bool() const { return bool(prog_); }
-  // Dispatches enough work groups of this compute program's local size to cover w x h.
+  // Dispatches enough work groups of this compute program's local size to cover w x h. A program
+  // compiled with the define "SSR_ROWS N" (common/screen_rows.glsl) covers N pixel rows per
+  // invocation, so it gets N times fewer groups.
   void dispatch_2d(int w, int h) const;
 
  private:
   ProgramObject prog_;
   int local_x_ = 1, local_y_ = 1;
+  int rows_ = 1;
 };
 
 }  // namespace ssr::gl
