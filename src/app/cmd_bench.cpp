@@ -209,7 +209,7 @@ int run_bench(const BenchOptions& o) {
         if (technique_info(v.technique).oracle && !run.oracles) run.oracles = oracle_agreement(*frame, ev.score);
         ++done;
       }
-      time_floor(*renderer, timing, run);  // after the variants (runner.h says why)
+      time_floor(*renderer, camera, timing, run);  // after the variants (runner.h says why)
       progress(done, total, "");
       std::printf("%s", results_table(run, clock).c_str());
       runs.push_back(std::move(run));

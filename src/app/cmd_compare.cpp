@@ -95,7 +95,7 @@ int run_compare(const CompareOptions& o) {
     // The two oracles check each other (ARCHITECTURE §5) wherever planar runs.
     if (technique_info(v.technique).oracle && !run.oracles) run.oracles = oracle_agreement(frame, ev.score);
   }
-  time_floor(renderer, timing, run);  // after the variants (runner.h says why)
+  time_floor(renderer, camera, timing, run);  // after the variants (runner.h says why)
   std::vector<GridTile> tiles = top;
   tiles.insert(tiles.end(), bottom.begin(), bottom.end());
   write_png(o.out, make_grid(tiles, static_cast<int>(top.size())));

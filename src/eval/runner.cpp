@@ -224,35 +224,39 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   return out;
 }
 
-void time_floor(Renderer& renderer, const TimingOptions& o, RunResults& run) {
-  const double ms = FloorPass(renderer.shaders()).time(renderer, o);
-  for (TechniqueResult& r : run.results) r.floor_ms = ms;
-}
-
-// Two pixel rows per invocation: the same traffic in 0.022 ms instead of 0.028 at 1080p and
-// 0.066 instead of 0.086 at 4K (H200; 4 and 8 rows were slower again), so one row per invocation
-// was not the floor. The techniques' passes were slower that way (docs/RESULTS.md).
-FloorPass::FloorPass(const gl::ShaderSource& shaders)
-    : program_(gl::Program::compute(shaders, "eval/floor.comp", {"SSR_ROWS 2"})) {}
-
-double FloorPass::time(Renderer& renderer, const TimingOptions& o) {
-  const auto pass = [&](gl::PassTimer* timer) {
-    renderer.bind_frame_inputs();
-    gl::ScopedPass timed(timer, "floor");
-    glBindImageTexture(IMG_OUT, renderer.reflection().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    program_.dispatch_2d(renderer.width(), renderer.height());
-  };
-  warm_up(o, true, 16, [&] { pass(nullptr); });
-  gl::PassTimer timer(o.clock);
-  for (int f = 0; f < o.frames; ++f) {
-    timer.begin_frame();
-    pass(&timer);
-    timer.end_frame();
+namespace {
+// The floor pass as a technique, so that it is timed in the same frames as the variants. Two
+// pixel rows per invocation: the same traffic in 0.022 ms instead of 0.028 at 1080p and 0.066
+// instead of 0.086 at 4K (H200; 4 and 8 rows and other group shapes were slower), so one row per
+// invocation was not the floor. The techniques' own passes were slower that way (RESULTS.md).
+struct NoParams {};
+class FloorTechnique final : public TechniqueWithParams<NoParams> {
+ public:
+  FloorTechnique() : TechniqueWithParams("floor", {}) {}
+  void load(const gl::ShaderSource& src) override {
+    program_ = gl::Program::compute(src, "eval/floor.comp", {"SSR_ROWS 2"});
   }
-  timer.flush();
-  std::vector<double> ms;
-  for (const gl::FrameTimes& frame : timer.completed()) ms.push_back(frame.empty() ? 0.0 : frame[0].ms);
-  return time_stats(ms).median;
+  TechniqueDecl declare() const override {
+    TechniqueDecl d;
+    d.reads = kReadGBuffer | kReadLit;
+    return d;
+  }
+  void run(const FrameContext& in) override {
+    gl::ScopedPass pass(in.timer, "floor");
+    glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    program_.dispatch_2d(in.width, in.height);
+  }
+
+ private:
+  gl::Program program_;
+};
+}  // namespace
+
+void time_floor(Renderer& renderer, const Camera& camera, const TimingOptions& o, RunResults& run) {
+  FloorTechnique floor;
+  floor.load(renderer.shaders());
+  const double ms = time_frames(renderer, camera, floor, o).technique.median;
+  for (TechniqueResult& r : run.results) r.floor_ms = ms;
 }
 
 EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const Camera& camera,

@@ -89,21 +89,12 @@ struct Timing {
 // with the outermost spans alone (the technique's time, no query between its passes).
 Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const TimingOptions& o);
 
-// The floor pass (ARCHITECTURE §6): reads a technique's inputs, writes its output once.
-class FloorPass {
- public:
-  explicit FloorPass(const gl::ShaderSource& shaders);
-  // Median time over `o.frames` runs (after `o.warmup`) on the renderer's current inputs.
-  double time(Renderer& renderer, const TimingOptions& o);
-
- private:
-  gl::Program program_;
-};
-
-// Times the floor pass on the renderer's current inputs and sets every result's floor_ms. Call
-// it after the variants: straight after a long reference (64 samples on rough scenes) the H200
-// timed it at 2.4x (0.065-0.076 ms against 0.028), while the variants after it were not slowed.
-void time_floor(Renderer& renderer, const TimingOptions& o, RunResults& run);
+// Times the floor pass (ARCHITECTURE §6: reads a technique's inputs, writes its output once) as
+// a technique of its own, in whole frames like every variant, and sets every result's floor_ms.
+// Call it after the variants: straight after a long reference (64 samples on rough scenes) the
+// H200 timed it at 2.4x (0.065-0.076 ms against 0.028). Timed alone, frame after frame of one
+// short pass, it also came out at 2.5x now and then at 4K (0.16 ms against 0.065): an idle GPU.
+void time_floor(Renderer& renderer, const Camera& camera, const TimingOptions& o, RunResults& run);
 
 // One frame of the variant with its shaders instrumented (SSR_TELEMETRY): per-ray iterations
 // and idle lanes (render/telemetry.h). None for a technique that records no telemetry.
