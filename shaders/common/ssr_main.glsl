@@ -49,12 +49,21 @@ float trace_refraction(ivec2 p) {
   return t.steps;
 }
 
+// The debug image at p: with SSR_DENOISE_OUTPUT it is the denoiser's input (always written),
+// else the debug views' channels, written only when read.
+void store_debug(ivec2 p, vec4 v) {
+#ifndef SSR_DENOISE_OUTPUT
+  if (!frame_writes_debug()) return;
+#endif
+  imageStore(out_debug, p, v);
+}
+
 // The reflection of pixel p; returns the iterations of all its rays.
 float reflect_pixel(ivec2 p) {
   GSample g = gbuffer_fetch(p);
   if (!is_reflective(g)) {
     imageStore(out_reflection, p, vec4(0.0));
-    imageStore(out_debug, p, vec4(0.0));
+    store_debug(p, vec4(0.0));
     return 0.0;
   }
   RayOptions o = params.ray;
@@ -109,10 +118,10 @@ float reflect_pixel(ivec2 p) {
   float confidence = clamp(weight / float(n), 0.0, 1.0);
 #ifdef SSR_DENOISE_OUTPUT
   imageStore(out_reflection, p, vec4(rgb * confidence, confidence));
-  imageStore(out_debug, p, first_ray);
+  store_debug(p, first_ray);
 #else
   imageStore(out_reflection, p, vec4(rgb, confidence));
-  imageStore(out_debug, p, vec4(steps / float(n), hits / float(n), hits > 0.0 ? dist / hits : 0.0, 1.0));
+  store_debug(p, vec4(steps / float(n), hits / float(n), hits > 0.0 ? dist / hits : 0.0, 1.0));
 #endif
   return steps;
 }

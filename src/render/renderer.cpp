@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "core/errors.h"
@@ -212,6 +213,11 @@ void Renderer::render(const FrameRequest& request, Technique& technique, ViewMod
   const TechniqueDecl decl = technique.declare();
   if (decl.reads & (kReadPrevLit | kReadPrevDepth | kReadPrevNormal)) ensure_history();
   TechniqueState& state = technique_state(technique, decl);
+  // The debug image costs bandwidth (a fifth of linear-binary's time on the H200): written only
+  // when read. Per render(), not per frame: the viewer's two sides share one frame's inputs.
+  const GLint debug = debug_outputs || view_info(view).debug ? 1 : 0;
+  glNamedBufferSubData(frame_ubo_.id(), offsetof(shared::FrameUniforms, counts) + 3 * sizeof(GLint), sizeof debug,
+                       &debug);
   {
     gl::ScopedPass span(timer, kTechniqueSpan);
     if (decl.reads & kReadBackDepth) backface_pass(timer);

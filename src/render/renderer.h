@@ -70,6 +70,9 @@ class Renderer {
   void reload_shaders();
 
   FrameSettings settings;
+  // Techniques write their debug image (debug()) on every frame, not only when the view shown is
+  // one of its debug views: for whoever reads it outside render() (the viewer's inspector).
+  bool debug_outputs = false;
 
   // The frame: renders `request`'s inputs unless they are this frame's already, then runs the
   // technique, composites and displays `view`.

@@ -66,6 +66,7 @@ TEST(Dda, RaysBackTowardsTheCameraStayFinite) {
       apply_assignments(*dda, {std::string("dda.stride=") + stride, "dda.jitter=true", "dda.samples=4",
                                std::string("dda.roughness=") + rough});
       dda->load(r.shaders());
+      r.debug_outputs = true;  // steps, read below
       r.render(s.cameras[0], *dda, ViewMode::Final, nullptr);
       const RgbaImageF refl = r.read_texture(r.reflection());
       EXPECT_EQ(test::count_nonfinite(refl), 0u) << "stride " << stride << " roughness " << rough;

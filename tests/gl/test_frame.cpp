@@ -218,3 +218,28 @@ TEST(Frame, LightingChangeReachesCachedInputs) {
     EXPECT_LT(sum_after, 0.9 * sum_before) << name << ": the dimmed lights did not reach its reflection";
   }
 }
+
+// The debug image costs bandwidth (a fifth of linear-binary's time on the H200): a technique
+// writes it when the view shown is one of its debug views or when debug_outputs asks, else not.
+TEST(Frame, DebugImageWrittenOnlyWhenRead) {
+  const Scene scene = make_builtin_scene("gallery");
+  Camera moved = scene.cameras[0];
+  moved.position += glm::vec3(0.4f, 0.1f, 0.0f);
+  for (const char* name : {"hiz", "linear-binary", "ppr"}) {
+    Renderer r(scene, 96, 54);
+    auto t = create_technique(name);
+    t->load(r.shaders());
+    const ViewMode view = std::string(name) == "ppr" ? ViewMode::Offsets : ViewMode::Steps;
+    r.render(scene.cameras[0], *t, view, nullptr);
+    const std::vector<float> shown = r.read_texture(r.debug()).pixels;
+    double sum = 0;
+    for (float v : shown) sum += std::abs(v);
+    ASSERT_GT(sum, 0.0) << name << ": its debug view shows an empty image";
+    r.render(moved, *t, ViewMode::Final, nullptr);
+    EXPECT_EQ(r.read_texture(r.debug()).pixels, shown) << name << ": wrote its debug image for the final view";
+    r.debug_outputs = true;
+    r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);  // the first frame again
+    r.render(moved, *t, ViewMode::Final, nullptr);
+    EXPECT_NE(r.read_texture(r.debug()).pixels, shown) << name << ": debug_outputs did not write it";
+  }
+}

@@ -318,6 +318,7 @@ TEST(Ppr, PatchedHolesNeverClaimTheSky) {
   for (const char* name : {"gallery", "gallery:reflectors=8"}) {
     const Scene scene = load_scene(name);
     Renderer r(scene, 640, 360);
+    r.debug_outputs = true;  // offsets and holes, read below
     auto reference = create_technique("reference");
     apply_assignments(*reference, {"reference.samples=4"});  // classes only: mirror floors
     reference->load(r.shaders());

@@ -25,6 +25,7 @@ Outputs render_with(Renderer& r, const std::string& technique, const std::vector
   auto t = create_technique(technique);
   apply_assignments(*t, sets);
   t->load(r.shaders());
+  r.debug_outputs = true;  // compared too
   // Two frames: the second one's denoiser has history.
   for (int f = 1; f <= 2; ++f)
     r.render(FrameRequest(r.scene().cameras[0], FrameTime{f, 0.0f}), *t, ViewMode::Final, nullptr);

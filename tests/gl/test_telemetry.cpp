@@ -36,6 +36,7 @@ FrameRun run_once(Renderer& r, const std::string& technique, bool instrumented, 
   apply_assignments(*t, {technique + ".roughness=0", technique + ".compact=" + (compact ? "true" : "false")});
   t->load(instrumented ? r.shaders().with_defines({"SSR_TELEMETRY"}) : r.shaders());
   r.telemetry().begin(kW, kH);
+  r.debug_outputs = true;  // steps, read against the telemetry
   r.render(FrameRequest(r.scene().cameras[0]), *t, ViewMode::Final, nullptr);
   return {r.read_texture(r.reflection()), r.read_texture(r.debug()), r.telemetry().read()};
 }
