@@ -4,11 +4,6 @@
 
 layout(std140, binding = UBO_FRAME) uniform FrameBlock { FrameUniforms frame; };
 
-// Whether techniques write their debug image (IMG_OUT2: steps, hits, offsets ...) this frame:
-// only when something reads it (Renderer::debug_outputs). Writing it every frame cost
-// linear-binary a fifth of its time on the H200.
-bool frame_writes_debug() { return frame.counts.w != 0; }
-
 // Pixel centre (integer pixel) -> uv in [0,1].
 vec2 pixel_to_uv(ivec2 p) { return (vec2(p) + 0.5) * frame.viewport.zw; }
 

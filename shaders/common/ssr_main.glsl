@@ -50,12 +50,12 @@ float trace_refraction(ivec2 p) {
 }
 
 // The debug image at p: with SSR_DENOISE_OUTPUT it is the denoiser's input (always written),
-// else the debug views' channels, written only when read.
+// else the debug views' channels, written by the variant compiled with SSR_DEBUG_IMAGE only (a
+// branch on a uniform kept what feeds them alive: linear-binary 0.77 ms against 0.61 without).
 void store_debug(ivec2 p, vec4 v) {
-#ifndef SSR_DENOISE_OUTPUT
-  if (!frame_writes_debug()) return;
-#endif
+#if defined(SSR_DENOISE_OUTPUT) || defined(SSR_DEBUG_IMAGE)
   imageStore(out_debug, p, v);
+#endif
 }
 
 // The reflection of pixel p; returns the iterations of all its rays.

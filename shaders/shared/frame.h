@@ -18,8 +18,7 @@ struct FrameUniforms {
   vec4 env_ground;
   vec4 env_constant;
   vec4 settings;       // x ambient scale, y exposure (stops), z reflective F0 threshold, w unused
-  ivec4 counts;        // x lights, y reflectors, z frame index (FrameTime::index), w 1 when
-                       // techniques write their debug image (a debug view or the inspector reads it)
+  ivec4 counts;        // x lights, y reflectors, z frame index (FrameTime::index), w unused
   vec4 clip_plane;     // world-space plane (n, d): geometry with dot(n, p) + d < 0 is clipped
   mat4 prev_view_proj; // the previous frame's view_proj (= view_proj when history is not valid)
   vec4 time;           // x seconds, y seconds since the previous frame, z 1 when the history

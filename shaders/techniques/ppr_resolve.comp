@@ -38,10 +38,14 @@ void main() {
   GSample g = gbuffer_fetch(p);
   if (!is_reflective(g) || g.reflector == 0u) {
     imageStore(out_reflection, p, is_reflective(g) ? unserved(p) : vec4(0.0));
-    if (frame_writes_debug()) imageStore(out_debug, p, vec4(0.0));
+#ifdef SSR_DEBUG_IMAGE
+    imageStore(out_debug, p, vec4(0.0));
+#endif
     return;
   }
   PprResolved r = ppr_resolve(p, g);
   imageStore(out_reflection, p, r.served ? r.reflection : unserved(p));
-  if (frame_writes_debug()) imageStore(out_debug, p, r.debug);
+#ifdef SSR_DEBUG_IMAGE
+  imageStore(out_debug, p, r.debug);
+#endif
 }

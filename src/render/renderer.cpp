@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstddef>
 #include <cstring>
 
 #include "core/errors.h"
@@ -213,16 +212,11 @@ void Renderer::render(const FrameRequest& request, Technique& technique, ViewMod
   const TechniqueDecl decl = technique.declare();
   if (decl.reads & (kReadPrevLit | kReadPrevDepth | kReadPrevNormal)) ensure_history();
   TechniqueState& state = technique_state(technique, decl);
-  // The debug image costs bandwidth (a fifth of linear-binary's time on the H200): written only
-  // when read. Per render(), not per frame: the viewer's two sides share one frame's inputs.
-  const GLint debug = debug_outputs || view_info(view).debug ? 1 : 0;
-  glNamedBufferSubData(frame_ubo_.id(), offsetof(shared::FrameUniforms, counts) + 3 * sizeof(GLint), sizeof debug,
-                       &debug);
   {
     gl::ScopedPass span(timer, kTechniqueSpan);
     if (decl.reads & kReadBackDepth) backface_pass(timer);
     if (decl.reads & kReadHiz) hiz_pass(timer);
-    technique_pass(technique, decl, state, timer);
+    technique_pass(technique, decl, state, debug_outputs || view_info(view).debug, timer);
   }
   composite_pass(decl.blend, timer);
   display_pass(view, timer);
@@ -440,7 +434,7 @@ Renderer::TechniqueState& Renderer::technique_state(Technique& t, const Techniqu
   return s;
 }
 
-void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, TechniqueState& state,
+void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, TechniqueState& state, bool debug,
                               gl::PassTimer* timer) {
   // Outputs the technique does not write are cleared, so nobody reads or shows another's image;
   // once, after a technique that wrote them (a clear each frame took 0.29 ms at 1080p on the H200).
@@ -460,7 +454,7 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
   FrameContext ctx{width_, height_, posed_scene(), geometry_id_, camera_, matrices_, frame_settings_,
                    time_, history_valid_, scene_diagonal_, frame_ubo_.id(), gbuffer_, lit_, motion_,
                    hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
-                   &refraction_, &debug_, timer, rebind};
+                   &refraction_, debug ? &debug_ : nullptr, timer, rebind};
   for (gl::Texture2D& tex : state.textures) ctx.textures.push_back(&tex);
   stage_views_.clear();
   for (const StageView& v : decl.stage_views)

@@ -147,7 +147,9 @@ class Renderer {
   void hiz_pass(gl::PassTimer* timer);
   void ensure_history();
   TechniqueState& technique_state(Technique& t, const TechniqueDecl& decl);
-  void technique_pass(Technique& t, const TechniqueDecl& decl, TechniqueState& state, gl::PassTimer* timer);
+  // `debug`: something reads the debug image this frame (FrameContext::debug).
+  void technique_pass(Technique& t, const TechniqueDecl& decl, TechniqueState& state, bool debug,
+                      gl::PassTimer* timer);
   void composite_pass(int blend, gl::PassTimer* timer);
   void display_pass(ViewMode view, gl::PassTimer* timer);
   void keep_color(TechniqueState& state);

@@ -121,7 +121,10 @@ struct FrameContext {
   std::vector<gl::Texture2D*> textures;  // the declared internal textures
   gl::Texture2D* reflection;    // RGBA16F: rgb radiance, a confidence in [0,1]
   gl::Texture2D* refraction;    // RGBA16F: radiance, confidence (glass pixels)
-  gl::Texture2D* debug;         // RGBA16F: the debug views' channels (display.comp)
+  // RGBA16F: the debug views' channels (display.comp), bound at IMG_OUT2; null when nothing
+  // reads them this frame: then a technique runs its variant that leaves them unwritten (the
+  // stores and what feeds them cost linear-binary a fifth of its time on the H200).
+  gl::Texture2D* debug;
   gl::PassTimer* timer;         // may be null
   std::function<void()> rebind;
 };

@@ -59,6 +59,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
     clear_ = std::move(clear);
     project_ = std::move(project);
     resolve_ = std::move(resolve);
+    resolve_debug_ = gl::Program();  // on first use
   }
 
   // With a fallback tracer, ppr also reads what it reads and its refraction of glass pixels
@@ -118,6 +119,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
       }
       FrameContext f = in;
       f.reflection = in.textures[2];
+      f.debug = nullptr;  // the resolve writes ppr's own debug views over every pixel
       f.textures.clear();
       fallback.run(f);
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -142,10 +144,14 @@ class PprTechnique final : public TechniqueWithParams<P> {
       gl::ScopedPass pass(in.timer, "ppr resolve");
       glBindTextureUnit(TEX_PPR_PROJECTED, intermediate.id());
       glBindImageTexture(IMG_PPR_INTERMEDIATE, next.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-      glProgramUniform1ui(resolve_.id(), 0, bits);
-      glProgramUniform1i(resolve_.id(), 1, params_.fallback != 0 ? 1 : 0);
+      // The offsets and holes views' image only when read (techniques/technique_api.h).
+      if (in.debug && !resolve_debug_)
+        resolve_debug_ = gl::Program::compute(src_, "techniques/ppr_resolve.comp", {"SSR_DEBUG_IMAGE"});
+      const gl::Program& resolve = in.debug ? resolve_debug_ : resolve_;
+      glProgramUniform1ui(resolve.id(), 0, bits);
+      glProgramUniform1i(resolve.id(), 1, params_.fallback != 0 ? 1 : 0);
       glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      resolve_.dispatch_2d(in.width, in.height);
+      resolve.dispatch_2d(in.width, in.height);
       glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
     emptied_ = true;
@@ -155,7 +161,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
   void reset() override { emptied_ = false; }
 
  private:
-  gl::Program clear_, project_, resolve_;
+  gl::Program clear_, project_, resolve_, resolve_debug_;
   // The fallback tracer at its defaults, created when the parameter names it (no GL needed).
   Technique& fallback_technique() const {
     // The choice's name, from the table row that describes it.

@@ -40,10 +40,10 @@ class TracerTechnique : public TechniqueWithParams<P> {
   // others, the classifier and the denoiser on first use.
   void load(const gl::ShaderSource& src) override {
     const bool compact = this->params_.ray.compact != 0, denoise = this->params_.ray.denoise.enabled != 0;
-    gl::Program p = compile(src, compact, denoise);
+    gl::Program p = compile(src, compact, denoise, false);
     src_ = src;
     for (gl::Program& v : programs_) v = gl::Program();
-    programs_[variant(compact, denoise)] = std::move(p);
+    programs_[variant(compact, denoise, false)] = std::move(p);
     classifier_loaded_ = denoiser_loaded_ = false;
   }
 
@@ -60,7 +60,8 @@ class TracerTechnique : public TechniqueWithParams<P> {
   void run(const FrameContext& in) override {
     const P p = resolved(AutoContext::of(in));
     const bool compact = p.ray.compact != 0, denoise = p.ray.denoise.enabled != 0;
-    const gl::Program& program = program_for(compact, denoise);
+    // The denoiser's inputs take the debug image's place: no debug variant of that one.
+    const gl::Program& program = program_for(compact, denoise, in.debug != nullptr && !denoise);
     if ((compact || denoise) && !classifier_loaded_) {
       classifier_.load(src_);
       classifier_loaded_ = true;
@@ -127,23 +128,27 @@ class TracerTechnique : public TechniqueWithParams<P> {
   std::uint32_t extra_reads_ = 0;
 
  private:
-  static std::size_t variant(bool compact, bool denoise) { return (compact ? 1 : 0) + (denoise ? 2 : 0); }
-  gl::Program compile(const gl::ShaderSource& src, bool compact, bool denoise) const {
+  static std::size_t variant(bool compact, bool denoise, bool debug) {
+    return (compact ? 1 : 0) + (denoise ? 2 : 0) + (debug ? 4 : 0);
+  }
+  gl::Program compile(const gl::ShaderSource& src, bool compact, bool denoise, bool debug) const {
     std::vector<std::string> defines;
     if (compact) defines.push_back("SSR_RAY_LIST");
     if (denoise) defines.push_back("SSR_DENOISE_OUTPUT");
+    if (debug) defines.push_back("SSR_DEBUG_IMAGE");
     return gl::Program::compute(src, shader_, defines);
   }
-  const gl::Program& program_for(bool compact, bool denoise) {
-    gl::Program& p = programs_[variant(compact, denoise)];
-    if (!p) p = compile(src_, compact, denoise);
+  const gl::Program& program_for(bool compact, bool denoise, bool debug) {
+    gl::Program& p = programs_[variant(compact, denoise, debug)];
+    if (!p) p = compile(src_, compact, denoise, debug);
     return p;
   }
 
   std::string shader_;
   Resolver resolve_;
   gl::ShaderSource src_;
-  std::array<gl::Program, 4> programs_;  // by variant(): every pixel / ray list, x plain / denoiser inputs
+  // By variant(): every pixel / ray list, x plain / denoiser inputs, x without / with the debug image.
+  std::array<gl::Program, 8> programs_;
   bool classifier_loaded_ = false, denoiser_loaded_ = false;
   TileClassifier classifier_;
   Denoiser denoiser_;
