@@ -40,7 +40,9 @@ void classify_texel(ivec2 t, out bool traces, out bool listed) {
 #ifdef CLASSIFY_FOR_TRACER
       if (!pixel_listed) {
         imageStore(out_reflection, p, vec4(0.0));
+#ifdef SSR_DEBUG_IMAGE
         imageStore(out_debug, p, vec4(0.0));
+#endif
       }
 #else
       imageStore(out_class, p, vec4(float(c) / CLASS_LEVELS));

@@ -1,6 +1,6 @@
 // Screen passes that cover several pixel rows per invocation (gl::Program::dispatch_2d divides
-// its groups by SSR_ROWS). A full-screen pass on the H200 costs about 0.025 ms at 1080p before
-// any work, and that floor follows the invocation count (docs/RESULTS.md).
+// its groups by SSR_ROWS). The floor pass does its traffic a fifth faster with two rows on the
+// H200; the techniques' passes were slower that way (docs/RESULTS.md), so only it uses this.
 #ifndef SSR_ROWS
 #define SSR_ROWS 1
 #endif

@@ -8,6 +8,7 @@ namespace ssr {
 void TileClassifier::load(const gl::ShaderSource& src) {
   program_ = gl::Program::compute(src, "render/classify.comp");
   tracer_program_ = gl::Program::compute(src, "render/classify.comp", {"CLASSIFY_FOR_TRACER"});
+  tracer_debug_program_ = gl::Program::compute(src, "render/classify.comp", {"CLASSIFY_FOR_TRACER", "SSR_DEBUG_IMAGE"});
 }
 
 glm::ivec2 TileClassifier::trace_size(int w, int h, int divisor) {
@@ -26,13 +27,14 @@ void TileClassifier::classify(const gl::Texture2D& classes, shared::ClassifyPara
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-void TileClassifier::classify_for_tracer(int width, int height, shared::ClassifyParams p, gl::PassTimer* timer) {
+void TileClassifier::classify_for_tracer(int width, int height, shared::ClassifyParams p, bool debug,
+                                         gl::PassTimer* timer) {
   gl::ScopedPass pass(timer, "classify");
   p.divisor = 1;
   p.trace_size = {width, height, 0, 0};
   p.list_rays = 1;  // the trace runs over the ray list
   prepare({width, height}, p);
-  tracer_program_.dispatch_2d(width, height);
+  (debug ? tracer_debug_program_ : tracer_program_).dispatch_2d(width, height);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_TEXTURE_FETCH_BARRIER_BIT);
 }

@@ -26,7 +26,8 @@ class TileClassifier {
   // `p` traces (and, with list_glass, those behind glass) and writes, for every other pixel,
   // what the tracer writes for a pixel without work: zeros in the images bound at IMG_OUT,
   // IMG_OUT2 and IMG_REFRACTION (shaders/common/ssr_main.glsl's outputs).
-  void classify_for_tracer(int width, int height, shared::ClassifyParams p, gl::PassTimer* timer);
+  // `debug`: the tracer writes its debug image this frame, so the unlisted pixels get theirs.
+  void classify_for_tracer(int width, int height, shared::ClassifyParams p, bool debug, gl::PassTimer* timer);
   // Binds the tile list at SSBO_TILES and as the indirect dispatch buffer; the trace pass calls
   // dispatch() with a program whose local size is CLASSIFY_TILE x CLASSIFY_TILE.
   void bind() const;
@@ -43,7 +44,7 @@ class TileClassifier {
   // Sizes the lists for a w x h trace grid, uploads `p`, zeroes the headers, binds them all.
   void prepare(glm::ivec2 size, const shared::ClassifyParams& p);
   gl::Program program_;
-  gl::Program tracer_program_;  // CLASSIFY_FOR_TRACER
+  gl::Program tracer_program_, tracer_debug_program_;  // CLASSIFY_FOR_TRACER (and SSR_DEBUG_IMAGE)
   gl::Buffer params_;
   gl::Buffer tiles_, rays_;
   std::size_t tiles_capacity_ = 0, rays_capacity_ = 0;

@@ -442,7 +442,7 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
     if (!writes && dirty) clear_texture(tex);
     dirty = writes;
   };
-  clear_unless_written(!decl.debug_views.empty(), debug_dirty_, debug_);
+  clear_unless_written(debug && !decl.debug_views.empty(), debug_dirty_, debug_);
   clear_unless_written(decl.writes_refraction, refraction_dirty_, refraction_);
   const auto rebind = [this, &state] {
     bind_frame_inputs();

@@ -78,7 +78,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
     };
     if (!denoise) {
       glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      if (compact) classifier_.classify_for_tracer(in.width, in.height, every_pixel, in.timer);
+      if (compact) classifier_.classify_for_tracer(in.width, in.height, every_pixel, in.debug != nullptr, in.timer);
       glUseProgram(program.id());
       trace();
       return;

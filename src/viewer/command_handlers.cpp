@@ -118,6 +118,10 @@ void Viewer::on_WindowShot(const std::string& a) {
 }
 
 void Viewer::on_Inspect(const std::string& a) {
+  if (!inspected_) {  // the debug image it reads: written from the next frame on
+    inspected_ = true;
+    frame(0.0);
+  }
   const auto space = a.find(' ');
   const nlohmann::json j = inspect(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
   std::printf("ssrlab-view: inspect %s\n", j.dump().c_str());

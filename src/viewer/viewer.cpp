@@ -80,7 +80,6 @@ void Viewer::load_scene_spec(const std::string& spec, const std::string& camera_
   cut_next_ = true;
   const Camera cam = camera_name.empty() ? scene.cameras.front() : scene.camera(camera_name);
   renderer_ = std::make_unique<Renderer>(scene, std::max(image_w_, 1), std::max(image_h_, 1), shaders_);
-  renderer_->debug_outputs = true;  // the inspector reads steps, hits and offsets at any view
   scene_spec_ = spec;
   cameras_ = scene.cameras;
   bookmarks_ = 0;

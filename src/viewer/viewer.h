@@ -52,7 +52,7 @@ struct Side {
   gl::Texture2D copy;       // RGBA8 display image of the last frame it ran
   gl::Texture2D color;      // RGBA16F composited colour of that frame (the A-vs-B figure reads it)
   gl::Texture2D debug;      // RGBA16F debug channels of that frame (steps, hits, distance / PPR offsets)
-  bool has_debug = false;   // the technique writes them (its declared debug views)
+  bool has_debug = false;   // the technique wrote them this frame (declared, and asked for)
   bool valid = false;       // `copy` holds an image of the current size
   std::string shown_key;    // the frame key of what `copy` shows
   int request = 0;          // on-demand: 2 = asked (the image says "computing"), 1 = run this frame
@@ -196,6 +196,10 @@ class Viewer {
   // Inspection: the pixel under the cursor (or pinned with I), the magnifier's zoom (0: off).
   std::optional<glm::ivec2> hovered_, pinned_;
   int magnifier_ = 0;
+  // The inspector reads the techniques' debug image (steps, hits, offsets), which they write
+  // only when asked (Renderer::debug_outputs): while its panel is open, and after a scripted
+  // `inspect`.
+  bool inspector_open_ = false, inspected_ = false;
 };
 
 }  // namespace ssr
