@@ -100,3 +100,41 @@ TEST(Program, FailedReloadKeepsTheLastGoodPrograms) {
   fs::remove_all(dir);
   test::expect_no_gl_errors();
 }
+
+// A program compiled with "SSR_ROWS N" covers N pixel rows per invocation (common/screen_rows.glsl)
+// and dispatch_2d gives it N times fewer groups: every pixel of an odd size is visited once, by
+// no more groups than that.
+TEST(Program, SeveralRowsPerInvocationVisitEveryPixelOnce) {
+  const fs::path dir = fs::temp_directory_path() / ("ssrlab-rows-" + std::to_string(::getpid()));
+  fs::create_directories(dir / "common");
+  std::ofstream(dir / "common/screen_rows.glsl") << gl::ShaderSource().read("common/screen_rows.glsl");
+  std::ofstream(dir / "rows.comp") << "#include \"common/screen_rows.glsl\"\n"
+                                      "layout(local_size_x = 8, local_size_y = 8) in;\n"
+                                      "layout(std430, binding = 0) buffer B { uint visits[]; };\n"
+                                      "layout(location = 0) uniform ivec2 size;\n"
+                                      "void main() {\n"
+                                      "  if (gl_LocalInvocationIndex == 0u) atomicAdd(visits[size.x * size.y], 1u);\n"
+                                      "  for (int r = 0; r < SSR_ROWS; ++r) {\n"
+                                      "    ivec2 p = screen_pixel(r);\n"
+                                      "    if (all(lessThan(p, size))) atomicAdd(visits[p.y * size.x + p.x], 1u);\n"
+                                      "  }\n"
+                                      "}\n";
+  const gl::ShaderSource src(dir);
+  const int w = 37, h = 29;
+  for (int rows : {1, 2, 3, 4}) {
+    gl::Program p = gl::Program::compute(src, "rows.comp", {"SSR_ROWS " + std::to_string(rows)});
+    std::vector<GLuint> visits(static_cast<std::size_t>(w * h) + 1, 0u);  // the last: work groups run
+    gl::Buffer buf = gl::make_buffer("visits", static_cast<GLsizeiptr>(visits.size() * sizeof(GLuint)), visits.data(),
+                                     GL_DYNAMIC_STORAGE_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buf.id());
+    glProgramUniform2i(p.id(), 0, w, h);
+    p.dispatch_2d(w, h);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(buf.id(), 0, static_cast<GLsizeiptr>(visits.size() * sizeof(GLuint)), visits.data());
+    for (std::size_t i = 0; i + 1 < visits.size(); ++i)
+      ASSERT_EQ(visits[i], 1u) << rows << " rows: pixel " << i % w << ", " << i / w;
+    EXPECT_EQ(visits.back(), static_cast<GLuint>(((w + 7) / 8) * ((h + 8 * rows - 1) / (8 * rows)))) << rows << " rows";
+  }
+  fs::remove_all(dir);
+  test::expect_no_gl_errors();
+}
