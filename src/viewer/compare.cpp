@@ -167,7 +167,8 @@ void Viewer::render() {
   const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
   const int n_sides = active_sides();
   renderer_->debug_outputs = inspector_open_ || inspected_;
-  const bool debug_view = view_ < static_cast<int>(view_table().size()) && view_table()[static_cast<std::size_t>(view_)].debug;
+  const bool debug_view =
+      view_ < static_cast<int>(view_table().size()) && view_table()[static_cast<std::size_t>(view_)].debug;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     const std::string key = fkey + "|" + technique_key(*s.technique);

@@ -428,11 +428,13 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
     ImGui::PlotLines("##frame", frame_ms.data(), static_cast<int>(frame_ms.size()), 0, overlay, 0.0f,
                      std::max(hi * 1.2f, 1.0f), ImVec2(plot_w, 45));
   }
-  if (!gpu) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
-    ImGui::PopStyleColor();
-  }
+  if (!gpu) text_disabled_wrapped("cpu: CPU clock around glFinish (llvmpipe), not GPU time");
+}
+
+void text_disabled_wrapped(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
 }
 
 }  // namespace ssr

@@ -65,6 +65,8 @@ struct TimingColumn {
 };
 void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
                  bool gpu);
+// A note in the disabled text colour, wrapped at the panel's width (the panel is narrow).
+void text_disabled_wrapped(const char* text);
 
 // The pixel inspector's values (viewer/inspector.h's JSON): one line a value, then per side.
 void draw_pixel_values(const nlohmann::json& values);

@@ -594,11 +594,9 @@ void Viewer::timing_panel(double dt) {
   }
   draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), dt * 1000.0,
               clock_ == gl::PassTimer::Clock::Gpu);
-  if (renderer_->debug_outputs) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("includes the debug image the inspector reads (bench leaves it out: tracers up to a fifth faster)");
-    ImGui::PopStyleColor();
-  }
+  if (renderer_->debug_outputs)
+    text_disabled_wrapped("includes the debug image the inspector reads (bench leaves it out: tracers up to a fifth "
+                          "faster)");
 }
 
 // A frame with only a progress bar over the last image: long CPU work (the reference) calls it.
