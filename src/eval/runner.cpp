@@ -154,17 +154,16 @@ namespace {
 constexpr double kGpuWarmupSeconds = 0.3;
 
 // Runs the warm-up: o.warmup calls of `frame`, and on the GPU clock, with `clock` set, more until
-// kGpuWarmupSeconds have passed, `batch` calls between waits (several for a short pass, so the
-// GPU stays busy).
+// kGpuWarmupSeconds have passed.
 template <typename Frame>
-void warm_up(const TimingOptions& o, bool clock, int batch, Frame&& frame) {
+void warm_up(const TimingOptions& o, bool clock, Frame&& frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   for (int f = 0; f < o.warmup; ++f) frame();
   if (clock && o.clock == gl::PassTimer::Clock::Gpu) {
     glFinish();
     while (seconds() < kGpuWarmupSeconds) {
-      for (int k = 0; k < batch; ++k) frame();
+      frame();
       glFinish();
     }
   }
@@ -178,7 +177,7 @@ std::vector<gl::FrameTimes> timed_frames(Renderer& renderer, const Camera& camer
   const auto render = [&](gl::PassTimer* timer) {
     renderer.render(FrameRequest(camera, FrameTime{next++, 0.0f}), t, ViewMode::Final, timer);
   };
-  warm_up(o, warm_clock, 1, [&] { render(nullptr); });
+  warm_up(o, warm_clock, [&] { render(nullptr); });
   gl::PassTimer timer(o.clock, 4, max_depth);
   for (int f = 0; f < o.frames; ++f) {
     timer.begin_frame();
