@@ -152,6 +152,7 @@ void Renderer::resize(int width, int height) {
   debug_ = gl::Texture2D("technique debug", GL_RGBA16F, width, height);
   refraction_ = gl::Texture2D("refraction", GL_RGBA16F, width, height);
   debug_dirty_ = refraction_dirty_ = true;  // undefined until written or cleared
+  debug_written_ = false;
   // Techniques fetch the lit colour at fractional hit positions: bilinear.
   glTextureParameteri(lit_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(lit_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -442,7 +443,8 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
     if (!writes && dirty) clear_texture(tex);
     dirty = writes;
   };
-  clear_unless_written(debug && !decl.debug_views.empty(), debug_dirty_, debug_);
+  debug_written_ = debug && !decl.debug_views.empty();
+  clear_unless_written(debug_written_, debug_dirty_, debug_);
   clear_unless_written(decl.writes_refraction, refraction_dirty_, refraction_);
   const auto rebind = [this, &state] {
     bind_frame_inputs();

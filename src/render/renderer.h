@@ -89,6 +89,8 @@ class Renderer {
   const gl::Texture2D& motion() const { return motion_; }
   const gl::Texture2D& reflection() const { return reflection_; }
   const gl::Texture2D& debug() const { return debug_; }  // RGBA16F: the debug views' channels
+  // Whether the last frame's technique wrote debug() (it has debug views, and they were asked for).
+  bool debug_written() const { return debug_written_; }
   const gl::Texture2D& refraction() const { return refraction_; }  // RGBA16F: radiance, confidence
   // Whoever writes debug() or refraction() outside a technique says so: the next technique that
   // does not write them then gets them cleared (technique_pass clears them only when dirty).
@@ -167,6 +169,7 @@ class Renderer {
   // debug_ / refraction_ may hold something other than zeros (technique_pass clears them for a
   // technique that does not write them).
   bool debug_dirty_ = true, refraction_dirty_ = true;
+  bool debug_written_ = false;
   std::optional<History> history_;
   gl::Buffer frame_ubo_;
   gl::Program gbuffer_prog_, glass_prog_, lighting_prog_, composite_prog_, display_prog_;

@@ -61,7 +61,8 @@ class TracerTechnique : public TechniqueWithParams<P> {
     const P p = resolved(AutoContext::of(in));
     const bool compact = p.ray.compact != 0, denoise = p.ray.denoise.enabled != 0;
     // The denoiser's inputs take the debug image's place: no debug variant of that one.
-    const gl::Program& program = program_for(compact, denoise, in.debug != nullptr && !denoise);
+    const bool debug = in.debug != nullptr && !denoise;
+    const gl::Program& program = program_for(compact, denoise, debug);
     if ((compact || denoise) && !classifier_loaded_) {
       classifier_.load(src_);
       classifier_loaded_ = true;
@@ -78,7 +79,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
     };
     if (!denoise) {
       glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      if (compact) classifier_.classify_for_tracer(in.width, in.height, every_pixel, in.debug != nullptr, in.timer);
+      if (compact) classifier_.classify_for_tracer(in.width, in.height, every_pixel, debug, in.timer);
       glUseProgram(program.id());
       trace();
       return;

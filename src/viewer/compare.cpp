@@ -167,8 +167,6 @@ void Viewer::render() {
   const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
   const int n_sides = active_sides();
   renderer_->debug_outputs = inspector_open_ || inspected_;
-  const bool debug_view =
-      view_ < static_cast<int>(view_table().size()) && view_table()[static_cast<std::size_t>(view_)].debug;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     const std::string key = fkey + "|" + technique_key(*s.technique);
@@ -200,7 +198,7 @@ void Viewer::render() {
                        w, h, 1);
     glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        w, h, 1);
-    s.has_debug = !s.technique->declare().debug_views.empty() && (renderer_->debug_outputs || debug_view);
+    s.has_debug = renderer_->debug_written();
     if (s.has_debug)
       glCopyImageSubData(renderer_->debug().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.debug.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                          w, h, 1);
