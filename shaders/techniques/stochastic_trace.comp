@@ -56,8 +56,10 @@ void main() {
     vec3 l = g.roughness < 0.01 ? reflect(-v, g.n_vs) : sample_reflection(g.n_vs, v, g.roughness, xi);
     if (dot(l, g.n_vs) <= 0.0) l = reflect(-v, g.n_vs);
     float pdf = reflection_pdf(g.n_vs, v, l, g.roughness);
-    TraceResult r = hiz_trace(g.pos_vs, l, HizTrace(params.max_distance, params.max_iterations, 0,
-                                                     params.max_level, params.thickness, false, g.reflector));
+    // Glossy rays stop sooner: the few that walk far (grazing ones) set the dispatch's time.
+    int cap = g.roughness > params.glossy_roughness ? params.glossy_iterations : params.max_iterations;
+    TraceResult r = hiz_trace(g.pos_vs, l, HizTrace(params.max_distance, cap, 0, params.max_level,
+                                                     params.thickness, false, g.reflector));
     vec4 radiance = r.hit ? vec4(hit_radiance(r.uv), 1.0) : vec4(0.0);
     imageStore(out_radiance, t, radiance);
     imageStore(out_ray, t, vec4(l * (r.hit ? r.distance : RAY_MISS_LENGTH), pdf));

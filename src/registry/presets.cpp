@@ -43,11 +43,13 @@ const std::vector<Preset>& presets() {
       {"stochastic-high", "stochastic",
        {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=8",
         "stochastic.spatial_radius=6", "stochastic.bilateral_radius=2"},
-       "the defaults: a ray per pixel at every roughness, auto iterations, 8 reused rays"},
+       "the defaults: a ray per pixel at every roughness, auto iterations (96 on glossy rays), 8 reused rays"},
       {"stochastic-ultra", "stochastic",
-       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=16",
-        "stochastic.spatial_radius=8", "stochastic.bilateral_radius=3", "stochastic.history=32"},
-       "a ray per pixel at every roughness, 16 reused rays, 7x7 bilateral, 32 frames of history"},
+       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.glossy_iterations=auto",
+        "stochastic.spatial_samples=16", "stochastic.spatial_radius=8", "stochastic.bilateral_radius=3",
+        "stochastic.history=32"},
+       "a ray per pixel at every roughness, auto iterations on every ray, 16 reused rays, 7x7 bilateral, "
+       "32 frames of history"},
   };
   return list;
 }

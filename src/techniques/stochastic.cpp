@@ -42,6 +42,11 @@ std::vector<ParamDesc> table() {
                      "reflections build up over frames."),
       with_auto(SSR_PARAM_INT(P, max_iterations, 1, 4096, "iterations",
                               "Cap on Hi-Z cell visits per ray; auto: half the image diagonal in pixels.")),
+      with_auto(SSR_PARAM_INT(P, glossy_iterations, 1, 4096, "iterations",
+                              "Lower cap for rays from pixels rougher than glossy_roughness: their few long "
+                              "rays set the trace's time and the denoiser blurs them; auto: max_iterations.")),
+      SSR_PARAM_FLOAT(P, glossy_roughness, 0.0, 1.0, 0.05, "",
+                      "Rays from pixels rougher than this stop at glossy_iterations."),
       SSR_PARAM_INT(P, max_level, 0, 15, "level", "Coarsest Hi-Z level the trace climbs to."),
       SSR_PARAM_FLOAT(P, thickness, 0.001, 50.0, 0.01, "world units",
                       "A ray point this far or less behind the depth buffer counts as a hit."),
@@ -89,6 +94,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     const AutoContext autos = AutoContext::of(in);  // "auto" as `hiz` resolves it
     if (p.max_distance == 0.0f) p.max_distance = autos.max_distance();
     if (p.max_iterations == 0) p.max_iterations = autos.hiz_iterations();
+    p.glossy_iterations = p.glossy_iterations == 0 ? p.max_iterations : std::min(p.glossy_iterations, p.max_iterations);
     const auto tex = std::span<gl::Texture2D* const>(in.textures);
     const shared::ClassifyParams c{.roughness_threshold = p.roughness_threshold,
                                    .quad_roughness = p.quad_roughness,

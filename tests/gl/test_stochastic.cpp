@@ -322,6 +322,23 @@ TEST(Stochastic, IndirectDispatchTracesOnlyClassifiedPixels) {
   test::expect_no_gl_errors();
 }
 
+// The glossy cap stops rays from rough pixels only: on cornell (a glossy floor of roughness 0.3
+// and nothing sharper) no ray visits more cells than it; on gallery the mirror floor's rays do.
+TEST(Stochastic, GlossyCapStopsOnlyRoughPixelsRays) {
+  for (const char* scene : {"cornell", "gallery"}) {
+    Renderer r(make_builtin_scene(scene), kW, kH);
+    const Camera camera = r.scene().cameras[0];
+    const auto capped = measure_telemetry(r, camera, Variant{"stochastic", "", {"stochastic.glossy_iterations=4"}});
+    const auto free = measure_telemetry(r, camera, Variant{"stochastic", "", {"stochastic.glossy_iterations=auto"}});
+    ASSERT_TRUE(capped && free) << scene;
+    std::printf("%s: most cells a ray visits, glossy cap 4: %d, auto: %d\n", scene, capped->max, free->max);
+    EXPECT_GT(free->max, 4) << scene;
+    if (std::string(scene) == "cornell") EXPECT_LE(capped->max, 4);
+    else EXPECT_GT(capped->max, 4);
+  }
+  test::expect_no_gl_errors();
+}
+
 // The whole pipeline on cornell's glossy floor under a still camera, and hiz with the same
 // denoiser (`denoise=true`): error against the truth falls as frames accumulate.
 TEST(Stochastic, LowersErrorOnCornellOverStillFrames) {
