@@ -15,7 +15,7 @@ struct StochasticParams {
   int half_resolution SSR_DEFAULT(0);           // trace one pixel of each 2x2 block
   int previous_frame SSR_DEFAULT(0);            // hits read the previous final colour (2nd bounce)
   int max_iterations SSR_DEFAULT(0);            // Hi-Z cell visits; 0 auto (half the image diagonal)
-  int glossy_iterations SSR_DEFAULT(96);        // cap for rays from pixels rougher than glossy_roughness; 0 auto
+  int glossy_iterations SSR_DEFAULT(128);       // cap for rays from pixels rougher than glossy_roughness; 0 auto
   float glossy_roughness SSR_DEFAULT(0.25f);    // where glossy_iterations starts to apply
   int max_level SSR_DEFAULT(10);                // coarsest Hi-Z level
   float thickness SSR_DEFAULT(0.15f);           // world units behind the depth buffer that count as a hit

@@ -43,7 +43,7 @@ const std::vector<Preset>& presets() {
       {"stochastic-high", "stochastic",
        {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=8",
         "stochastic.spatial_radius=6", "stochastic.bilateral_radius=2"},
-       "the defaults: a ray per pixel at every roughness, auto iterations (96 on glossy rays), 8 reused rays"},
+       "the defaults: a ray per pixel at every roughness, auto iterations (128 on glossy rays), 8 reused rays"},
       {"stochastic-ultra", "stochastic",
        {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.glossy_iterations=auto",
         "stochastic.spatial_samples=16", "stochastic.spatial_radius=8", "stochastic.bilateral_radius=3",
