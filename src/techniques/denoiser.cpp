@@ -26,6 +26,11 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
   t.push_back(at({"spatial_radius", ParamType::Float, 0, 0, 32, 0.5, "pixels",
                   "Reuse radius at roughness 0.5 and above; it shrinks linearly to 0 at roughness 0."},
                  offsetof(D, spatial_radius)));
+  t.push_back(at({"firefly", ParamType::Bool, 0, 0, 1, 1, "",
+                  "Stage 1 weighs each ray by 1 / (1 + its luminance) (Karis) on pixels rougher than 0.1 "
+                  "(fully from 0.3): a bright outlier no longer spreads over the reuse disk, so first frames "
+                  "are cleaner and flicker less, but highlights stay dimmer once history has built up."},
+                 offsetof(D, firefly)));
   t.push_back(at({"temporal", ParamType::Bool, 0, 0, 1, 1, "",
                   "Denoiser stage 2: accumulate over frames (motion and hit-parallax reprojection)."},
                  offsetof(D, temporal)));
