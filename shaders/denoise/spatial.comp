@@ -6,8 +6,8 @@
 // sample was drawn with, so each pixel keeps its own lobe. The radius grows with roughness;
 // mirror pixels only fill from neighbours where they have no ray (half resolution, quads). With
 // the stage off it is the upsample alone: the nearest rays that stand for this pixel. With
-// `firefly`, glossy pixels weigh each ray by 1 / (1 + luminance) too (Karis): less noise,
-// slightly dimmer highlights.
+// `firefly`, glossy pixels weigh each ray by 1 / (1 + luminance) too (Karis), less as their
+// history grows: cleaner first frames and less flicker, no lasting bias.
 // Writes premultiplied radiance and (luminance variance, mean hit length).
 #include "common/brdf.glsl"
 #include "common/gbuffer.glsl"
@@ -19,6 +19,8 @@ layout(std140, binding = UBO_PASS) uniform PassBlock { DenoisePass pass; };
 layout(binding = TEX_CLASS) uniform sampler2D class_tex;
 layout(binding = TEX_TRACE_RADIANCE) uniform sampler2D radiance_tex;
 layout(binding = TEX_TRACE_RAY) uniform sampler2D ray_tex;
+layout(binding = TEX_HISTORY_STATS) uniform sampler2D history_stats;  // last frame's (variance, frames)
+layout(binding = TEX_MOTION) uniform sampler2D motion_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_radiance;
 layout(binding = IMG_OUT2, rg16f) uniform writeonly image2D out_stats;
 
@@ -31,7 +33,7 @@ struct Accum {
 
 // Adds the ray of the trace texel that covers pixel q (if it traced this frame) to p's sums.
 // `brdf`: weight by the ratio estimator (glossy p); else by geometry and `kernel` only.
-void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf) {
+void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf, float firefly) {
   ivec2 size = ivec2(frame.viewport.xy);
   int d = pass.trace.x;
   ivec2 t = q / d;
@@ -50,7 +52,7 @@ void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf)
   // Fireflies (a rare ray that found a small bright source) would spread over the whole disk:
   // weigh rays down by their luminance (Karis). Not on sharp lobes, whose neighbours' rays
   // differ for real (edges in the reflection), not by chance.
-  if (pass.params.firefly != 0) w /= 1.0 + lum * clamp((g.roughness - 0.1) / 0.2, 0.0, 1.0);
+  w /= 1.0 + lum * firefly;
   if (!(w > 0.0)) return;
   a.radiance += w * radiance;
   a.weight += w;
@@ -60,6 +62,20 @@ void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf)
     a.length += w * length(ray.xyz);
     a.length_weight += w;
   }
+}
+
+// How strongly the rays are weighed down by luminance at pixel p: fully on rough lobes, not on
+// sharp ones, and less as the pixel's history grows (the accumulation averages fireflies out,
+// and the weighting's bias would stay).
+float firefly_strength(ivec2 p, GSample g) {
+  if (pass.params.firefly == 0) return 0.0;
+  float s = clamp((g.roughness - 0.1) / 0.2, 0.0, 1.0);
+  if (pass.params.temporal != 0) {
+    ivec2 prev = ivec2(floor(vec2(p) + 0.5 + texelFetch(motion_tex, p, 0).xy));
+    if (all(greaterThanEqual(prev, ivec2(0))) && all(lessThan(prev, ivec2(frame.viewport.xy))))
+      s /= 1.0 + texelFetch(history_stats, prev, 0).g;
+  }
+  return s;
 }
 
 // A Vogel (golden-angle) disk: sample i of n at radius r, turned by `angle`.
@@ -83,20 +99,21 @@ void main() {
   bool glossy = g.roughness >= 0.05;
   Accum a = Accum(vec4(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
   // Its own ray, if any; else the nearest rays around it (the upsample).
-  add_ray(a, g, v, p, 1.0, glossy);
+  float firefly = firefly_strength(p, g);
+  add_ray(a, g, v, p, 1.0, glossy, firefly);
   int d = pass.trace.x;
   bool own = c == CLASS_TRACED && (d == 1 || p == (p / d) * d + pass.trace.yz);
   if (!own || a.weight == 0.0)
     for (int y = -1; y <= 1; ++y)
       for (int x = -1; x <= 1; ++x)
-        if (x != 0 || y != 0) add_ray(a, g, v, p + ivec2(x, y) * d, 0.5, glossy);
+        if (x != 0 || y != 0) add_ray(a, g, v, p + ivec2(x, y) * d, 0.5, glossy, firefly);
   float radius = pass.params.spatial_radius * clamp(g.roughness * 2.0, 0.0, 1.0);
   if (pass.params.spatial != 0 && glossy && radius >= 1.0) {
     // A per-pixel, per-frame turn of the disk: neighbouring pixels pick different neighbours.
     float angle = 6.28318530718 * fract(0.754877669 * float(p.x) + 0.569840296 * float(p.y) +
                                          0.61803398875 * float(frame.counts.z));
     int n = clamp(pass.params.spatial_samples, 1, 32);
-    for (int i = 0; i < n; ++i) add_ray(a, g, v, p + ivec2(round(vogel(i, n, radius, angle))), 1.0, true);
+    for (int i = 0; i < n; ++i) add_ray(a, g, v, p + ivec2(round(vogel(i, n, radius, angle))), 1.0, true, firefly);
   }
   vec4 radiance = a.weight > 0.0 ? a.radiance / a.weight : vec4(0.0);
   float mean = a.weight > 0.0 ? a.m1 / a.weight : 0.0;

@@ -28,8 +28,9 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
                  offsetof(D, spatial_radius)));
   t.push_back(at({"firefly", ParamType::Bool, 0, 0, 1, 1, "",
                   "Stage 1 weighs each ray by 1 / (1 + its luminance) (Karis) on pixels rougher than 0.1 "
-                  "(fully from 0.3): a bright outlier no longer spreads over the reuse disk, so first frames "
-                  "are cleaner and flicker less, but highlights stay dimmer once history has built up."},
+                  "(fully from 0.3), divided by 1 + the pixel's history length: a bright outlier no longer "
+                  "spreads over the reuse disk in the first frames, and the weighting's bias fades as the "
+                  "accumulation takes over."},
                  offsetof(D, firefly)));
   t.push_back(at({"temporal", ParamType::Bool, 0, 0, 1, 1, "",
                   "Denoiser stage 2: accumulate over frames (motion and hit-parallax reprojection)."},
@@ -118,6 +119,10 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
   glBindTextureUnit(TEX_CLASS, t(kClass).id());
   glBindTextureUnit(TEX_TRACE_RADIANCE, t(kTraceRadiance).id());
   glBindTextureUnit(TEX_TRACE_RAY, t(kTraceRay).id());
+  // Last frame wrote one pair (zeroed by the frame after a reset): read it, write the other.
+  const Slot out = temporal_slot(), in = out == kTemporalA ? kTemporalB : kTemporalA;
+  const auto next = [](Slot s) { return static_cast<Slot>(s + 1); };
+  glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());  // the spatial stage's firefly weight reads it
   {
     gl::ScopedPass timed(frame.timer, p.spatial ? "spatial" : "upsample");
     bind_out(IMG_OUT, t(kSpatial));
@@ -129,9 +134,6 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
   const gl::Texture2D* stats = &t(kSpatialStats);
   if (p.temporal) {
     gl::ScopedPass timed(frame.timer, "temporal");
-    // Last frame wrote one pair (zeroed by the frame after a reset): read it, write the other.
-    const Slot out = temporal_slot(), in = out == kTemporalA ? kTemporalB : kTemporalA;
-    const auto next = [](Slot s) { return static_cast<Slot>(s + 1); };
     glBindTextureUnit(TEX_STAGE_IN, radiance->id());
     glBindTextureUnit(TEX_STAGE_STATS, stats->id());
     glBindTextureUnit(TEX_HISTORY, t(in).id());

@@ -165,9 +165,9 @@ TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
   test::expect_no_gl_errors();
 }
 
-// A rough floor fed 1 everywhere but at scattered fireflies of 100: with `firefly` off every
-// pixel within the reuse disk of one shows a share of it; on, a firefly weighs 1/101 against
-// its neighbours' 1/2, so they stay near 1, and a constant input comes back unchanged.
+// A rough floor fed 1 everywhere but at scattered fireflies of 100, no history: with `firefly`
+// off every pixel within the reuse disk of one shows a share of it; on, a firefly weighs 1/101
+// against its neighbours' 1/2, so they stay near 1, and a constant input comes back unchanged.
 TEST(Denoiser, FireflyWeightKeepsOutliersFromSpreading) {
   const Scene s = floor_scene(0.5f);
   Renderer r(s, kW, kH);
@@ -388,9 +388,10 @@ TEST(Stochastic, LowersErrorOnCornellOverStillFrames) {
     const auto psnr = [&](int frame) { return res.frames.at(static_cast<std::size_t>(frame)).results.at(v).error->psnr; };
     std::printf("%s on cornell %dx%d: %.2f dB at frame 0, %.2f at 1, %.2f at 15\n", variants[v].label().c_str(), kW,
                 kH, psnr(0), psnr(1), psnr(15));
-    // Measured (llvmpipe): stochastic 17.02 dB at frame 0, 21.60 at 1, 23.39 at 15; hiz
-    // denoised 21.46, 22.71, 22.96 (its first frame's 1 spp scored better by chance).
-    EXPECT_GT(psnr(15), psnr(0) + (v == 0 ? 4.0 : 0.75)) << variants[v].label();
+    // Measured (llvmpipe): stochastic 21.46 dB at frame 0, 22.59 at 1, 23.34 at 15; hiz
+    // denoised 21.18, 22.51, 22.82. (Before the firefly weighting, stochastic's first frame
+    // scored 17.02: its fireflies spread over the reuse disk.)
+    EXPECT_GT(psnr(15), psnr(0) + 1.0) << variants[v].label();
     EXPECT_EQ(res.summary.at(v).nonfinite, 0u);
   }
   test::expect_no_gl_errors();
