@@ -132,17 +132,25 @@ float noise(int x, int y, int frame) {
 
 std::vector<bool> reflective(const Renderer& r) { return reflective_pixels(r.read_material(), r.read_depth()); }
 
+// The denoiser's spatial stage alone (then the resolve) on floor_scene(roughness).
+struct SpatialOnly {
+  explicit SpatialOnly(float roughness) : s(floor_scene(roughness)), r(s, kW, kH) {
+    probe.load(r.shaders());
+    probe.p().temporal = 0;
+    probe.p().bilateral = 0;
+  }
+  Scene s;
+  Renderer r;
+  DenoiseProbe probe;
+};
+
 }  // namespace
 
 // On a mirror (roughness 0) the spatial stage reuses no neighbour where a pixel has its own
 // ray: it returns its input.
 TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
-  const Scene s = floor_scene(0.0f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
-  probe.p().temporal = 0;
-  probe.p().bilateral = 0;
+  SpatialOnly t(0.0f);
+  auto& [s, r, probe] = t;
   probe.radiance = [](int x, int y, int) { return glm::vec3(noise(x, y, 0), noise(y, x, 0), 0.5f); };
   r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
   const RgbaImageF out = r.read_texture(r.reflection());
@@ -169,12 +177,8 @@ TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
 // off every pixel within the reuse disk of one shows a share of it; on, a firefly weighs 1/101
 // against its neighbours' 1/2, so they stay near 1, and a constant input comes back unchanged.
 TEST(Denoiser, FireflyWeightKeepsOutliersFromSpreading) {
-  const Scene s = floor_scene(0.5f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
-  probe.p().temporal = 0;
-  probe.p().bilateral = 0;
+  SpatialOnly t(0.5f);
+  auto& [s, r, probe] = t;
   const auto firefly = [](int x, int y) { return noise(x, y, 0) < 0.02f; };
   const auto brightest = [&](bool on, bool with_fireflies) {
     probe.p().firefly = on;
