@@ -7,7 +7,7 @@
 // mirror pixels only fill from neighbours where they have no ray (half resolution, quads). With
 // the stage off it is the upsample alone: the nearest rays that stand for this pixel. With
 // `firefly`, glossy pixels weigh each ray by 1 / (1 + luminance) too (Karis), less as their
-// history grows: cleaner first frames and less flicker, no lasting bias.
+// history grows: cleaner first frames and less flicker (docs/RESULTS.md).
 // Writes premultiplied radiance and (luminance variance, mean hit length).
 #include "common/brdf.glsl"
 #include "common/gbuffer.glsl"
@@ -65,8 +65,8 @@ void add_ray(inout Accum a, GSample g, vec3 v, ivec2 q, float kernel, bool brdf,
 }
 
 // How strongly the rays are weighed down by luminance at pixel p: fully on rough lobes, not on
-// sharp ones, and less as the pixel's history grows (the accumulation averages fireflies out,
-// and the weighting's bias would stay).
+// sharp ones, and less as the pixel's history grows (the accumulation averages fireflies out;
+// a weighting that stayed kept cornell's highlights dim: docs/RESULTS.md).
 float firefly_strength(ivec2 p, GSample g) {
   if (pass.params.firefly == 0) return 0.0;
   float s = clamp((g.roughness - 0.1) / 0.2, 0.0, 1.0);

@@ -19,7 +19,7 @@ struct DenoiseParams {
   int bilateral SSR_DEFAULT(1);             // stage 3: cross-bilateral cleanup
   int bilateral_radius SSR_DEFAULT(2);      // pixels: a (2r+1)^2 window
   float bilateral_sigma SSR_DEFAULT(2.0f);  // pixels: spatial sigma at full variance
-  int firefly SSR_DEFAULT(1);               // stage 1: reused rays weigh 1 / (1 + luminance) on young glossy pixels
+  int firefly SSR_DEFAULT(1);               // stage 1: reused rays weigh 1 / (1 + luminance), less with history
 };
 
 // What one denoiser stage reads besides its parameters (UBO_PASS).

@@ -29,7 +29,7 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
   t.push_back(at({"firefly", ParamType::Bool, 0, 0, 1, 1, "",
                   "Stage 1 weighs each ray by 1 / (1 + its luminance) (Karis) on pixels rougher than 0.1 "
                   "(fully from 0.3), divided by 1 + the pixel's history length: a bright outlier no longer "
-                  "spreads over the reuse disk in the first frames, and the weighting's bias fades as the "
+                  "spreads over the reuse disk in the first frames, and the weighting weakens as the "
                   "accumulation takes over."},
                  offsetof(D, firefly)));
   t.push_back(at({"temporal", ParamType::Bool, 0, 0, 1, 1, "",
