@@ -1,4 +1,5 @@
-// The reflection denoiser (issue 14): spatial reconstruction with the ratio estimator, temporal
+// The reflection denoiser (issue 14): spatial reconstruction with the ratio estimator (fireflies
+// weighed down while a pixel's history is young: it reads last frame's history length), temporal
 // accumulation with surface and parallax reprojection, cross-bilateral cleanup
 // (shaders/denoise/*.comp, each its own timed pass). `stochastic` runs it on its one ray per
 // pixel; the tracers (linear, linear-binary, dda, hiz) run it on their samples with
