@@ -9,6 +9,7 @@
 #include "shared/bindings.h"
 #include "shared/tonemap.h"
 #include "techniques/assignments.h"
+#include "techniques/screen_pass.h"
 #include "registry/registry.h"
 
 namespace ssr {
@@ -223,36 +224,12 @@ Timing time_frames(Renderer& renderer, const Camera& camera, Technique& t, const
   return out;
 }
 
-namespace {
-// The floor pass as a technique, so that it is timed in the same frames as the variants. Two
-// pixel rows per invocation: the same traffic in 0.022 ms instead of 0.028 at 1080p and 0.066
-// instead of 0.086 at 4K (H200; 4 and 8 rows and other group shapes were slower), so one row per
-// invocation was not the floor. The techniques' own passes were slower that way (RESULTS.md).
-struct NoParams {};
-class FloorTechnique final : public TechniqueWithParams<NoParams> {
- public:
-  FloorTechnique() : TechniqueWithParams("floor", {}) {}
-  void load(const gl::ShaderSource& src) override {
-    program_ = gl::Program::compute(src, "eval/floor.comp", {"SSR_ROWS 2"});
-  }
-  TechniqueDecl declare() const override {
-    TechniqueDecl d;
-    d.reads = kReadGBuffer | kReadLit;
-    return d;
-  }
-  void run(const FrameContext& in) override {
-    gl::ScopedPass pass(in.timer, "floor");
-    glBindImageTexture(IMG_OUT, in.reflection->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    program_.dispatch_2d(in.width, in.height);
-  }
-
- private:
-  gl::Program program_;
-};
-}  // namespace
-
 void time_floor(Renderer& renderer, const Camera& camera, const TimingOptions& o, RunResults& run) {
-  FloorTechnique floor;
+  // A technique, so that it is timed in the same frames as the variants. Two pixel rows per
+  // invocation: the same traffic in 0.022 ms instead of 0.028 at 1080p and 0.066 instead of
+  // 0.086 at 4K (H200; 4 and 8 rows and other group shapes were slower), so one row per
+  // invocation was not the floor. The techniques' own passes were slower that way (RESULTS.md).
+  ScreenPassTechnique floor("floor", "eval/floor.comp", kReadGBuffer | kReadLit, {"SSR_ROWS 2"});
   floor.load(renderer.shaders());
   const double ms = time_frames(renderer, camera, floor, o).technique.median;
   for (TechniqueResult& r : run.results) r.floor_ms = ms;
