@@ -3,7 +3,8 @@
 # (ssrlab on PATH, e.g. .gpu/run's):
 #   scripts/speed_results.sh OUTDIR [part ...]     (default: every part)
 # equal:    gallery and corridor at 1080p and 4K: linear-binary at 300 (default) and 500 steps
-#           (its "auto" ray is the scene's diagonal: long enough), hiz at iteration caps 64..auto,
+#           (its "auto" ray is the scene's diagonal: long enough), hiz at iteration caps 64..auto
+#           and thicknesses 0.15 (its default), 0.3, 0.5 (corridor needs more than the default),
 #           dda at strides 1..8, linear; telemetry per result: the equal-error table.
 # compact:  every tracer with and without the ray list (compact), gallery and corridor, 1080p.
 # pedestal: hiz and stochastic at their defaults on pedestal and cornell, 1080p (telemetry).
@@ -20,6 +21,7 @@ for part in $parts; do
     equal)
       ssrlab bench --scenes gallery,corridor --sizes 1080p,4k --techniques linear-binary,hiz,dda,linear \
         --sweep linear-binary.linear_steps=300,500 --sweep hiz.max_iterations=64,96,128,192,auto \
+        --sweep hiz.thickness=0.15,0.3,0.5 \
         --sweep dda.stride=1,2,4,8 --set reference.samples=64 $common \
         --json "$out/equal.json" > "$out/equal.txt" ;;
     compact)
