@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Markdown tables for docs/RESULTS.md's stochastic section, from scripts/stochastic_results.sh's
-JSON: stages-*.json (each denoiser stage, per roughness band), paths-*.json (instability and
+JSON: stages-*.json (each denoiser stage, per roughness band and class, with the pixels each
+figure rests on), paths-*.json (instability and
 ghosting), bench JSON (time per pass).
   scripts/stochastic_table.py stages DIR | paths DIR | bench FILE.json..."""
 import glob
@@ -37,8 +38,8 @@ def stages(directory):
         regions = [k for k in ("mirror", "glossy", "rough") if first_regions.get(k, {}).get("pixels")]
         bands = sorted((k for k in d["frames"][0]["results"][0]["regions"] if k.startswith("reflector:")),
                        key=lambda k: int(k.split(":")[1]))
-        if len(bands) > 2:  # the ramp: one column per band (roughness (N-1)/10)
-            regions = bands
+        if len(bands) > 2:  # the ramp: one column per band (roughness (N-1)/10), then its classes
+            regions = bands + regions
         names = [f"r {(int(k.split(':')[1]) - 1) / 10:.1f}" if k.startswith("reflector:") else k for k in regions]
         print(f"\n{d['scene']} ({d['width']}x{d['height']}, still camera): reflection PSNR (dB) on traceable "
               f"pixels, frame 0 -> frame {last}; flicker = mean excess change per frame\n")
@@ -49,6 +50,11 @@ def stages(directory):
             end = d["frames"][last]["results"][i]
             cells = [f"{fmt(reflection_psnr(first, k), 1)} -> {fmt(reflection_psnr(end, k), 1)}" for k in regions]
             print(f"| {short(s['label'])} | " + " | ".join(cells) + f" | {fmt(s['instability']['mean'], 4)} |")
+        # What each column's figure rests on (absent from the stripped copies in docs/results).
+        counts = [first_regions[k].get("traceable", {}).get("pixels") for k in regions]
+        if all(c is not None for c in counts):
+            print("| traceable pixels (of all) | " + " | ".join(
+                f"{c} ({first_regions[k]['pixels']})" for c, k in zip(counts, regions)) + " | |")
 
 
 def paths(directory):
