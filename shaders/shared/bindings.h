@@ -9,6 +9,7 @@
 #define UBO_DRAW 1       // DrawUniforms: per G-buffer draw (shared/frame.h)
 #define UBO_TECHNIQUE 2  // the running technique's Params struct (shared/<technique>.h)
 #define UBO_PASS 3       // a technique-internal pass's own parameters (classification, denoiser stages)
+#define UBO_PPR_REFLECTORS 4  // ppr's projection: the SSBO_PPR_REFLECTORS buffer's first PprReflector
 
 // Shader storage buffers
 #define SSBO_LIGHTS 0          // GpuLight[]

@@ -11,17 +11,27 @@ layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprRe
 layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform coherent uimage2D intermediate;
 layout(location = 0) uniform uint u_fraction_bits;
 
-// The first reflectors, copied once per work group: every pixel reads every reflector.
-#define SHARED_REFLECTORS 64
+// Every pixel reads every reflector. A single one comes from a uniform block (its fields become
+// constant operands); several are copied once per work group into shared memory, sized for the
+// most a scene may have (a 64-entry copy made the pass slower even with one reflector; the
+// uniform block indexed by the loop ran 4x slower with 16: docs/RESULTS.md, Speed).
+layout(std140, binding = UBO_PPR_REFLECTORS) uniform FirstReflector { PprReflector first_reflector; };
+#define SHARED_REFLECTORS PPR_MAX_REFLECTORS
 shared PprReflector group_reflectors[SHARED_REFLECTORS];
-PprReflector reflector(int k) { return k < SHARED_REFLECTORS ? group_reflectors[k] : reflectors[k]; }
+bool one_reflector() { return params.reflector_count == 1; }
+PprReflector reflector(int k) {
+  if (one_reflector()) return first_reflector;
+  return k < SHARED_REFLECTORS ? group_reflectors[k] : reflectors[k];  // never past the copy's end
+}
 
 #include "common/ppr_project.glsl"
 
 void main() {
-  for (uint i = gl_LocalInvocationIndex; i < uint(min(params.reflector_count, SHARED_REFLECTORS)); i += 64u)
-    group_reflectors[i] = reflectors[i];
-  barrier();
+  if (!one_reflector()) {  // uniform: every invocation reaches the barrier or none does
+    for (uint i = gl_LocalInvocationIndex; i < uint(min(params.reflector_count, SHARED_REFLECTORS)); i += 64u)
+      group_reflectors[i] = reflectors[i];
+    barrier();
+  }
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
   GSample g = gbuffer_fetch(p);

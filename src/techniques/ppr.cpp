@@ -97,6 +97,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
       refl.push_back({glm::vec4(n, d), glm::vec4(r.center, 1.0f), glm::vec4(r.tangent, r.half_extents.x),
                       glm::vec4(r.bitangent, r.half_extents.y)});
     }
+    static_assert(Scene::kMaxReflectors <= PPR_MAX_REFLECTORS, "ppr_project.comp's shared copy holds them all");
     params_.reflector_count = static_cast<int>(refl.size());
     if (refl.empty()) refl.push_back({});  // a buffer must have storage
     const std::size_t bytes = refl.size() * sizeof(refl[0]);
@@ -128,6 +129,7 @@ class PprTechnique final : public TechniqueWithParams<P> {
 
     bind_params();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, SSBO_PPR_REFLECTORS, reflectors_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PPR_REFLECTORS, reflectors_.id());  // the first one (projection)
     glBindImageTexture(IMG_PPR_INTERMEDIATE, intermediate.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     if (!emptied_) {  // first frame, or the frame zeroed the textures (reset)
       gl::ScopedPass pass(in.timer, "ppr clear");
