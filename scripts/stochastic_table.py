@@ -1,8 +1,7 @@
 #!/usr/bin/env python3
 """Markdown tables for docs/RESULTS.md's stochastic section, from scripts/stochastic_results.sh's
 JSON: stages-*.json (each denoiser stage, per roughness band and class, with the pixels each
-figure rests on), paths-*.json (instability and
-ghosting), bench JSON (time per pass).
+figure rests on), paths-*.json (instability and ghosting), bench JSON (time per pass).
   scripts/stochastic_table.py stages DIR | paths DIR | bench FILE.json..."""
 import glob
 import json
