@@ -122,7 +122,8 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
   // Last frame wrote one pair (zeroed by the frame after a reset): read it, write the other.
   const Slot out = temporal_slot(), in = out == kTemporalA ? kTemporalB : kTemporalA;
   const auto next = [](Slot s) { return static_cast<Slot>(s + 1); };
-  glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());  // the spatial stage's firefly weight reads it
+  // Last frame's (variance, frames): the spatial stage's firefly weight and the temporal stage.
+  glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());
   {
     gl::ScopedPass timed(frame.timer, p.spatial ? "spatial" : "upsample");
     bind_out(IMG_OUT, t(kSpatial));
@@ -137,7 +138,6 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
     glBindTextureUnit(TEX_STAGE_IN, radiance->id());
     glBindTextureUnit(TEX_STAGE_STATS, stats->id());
     glBindTextureUnit(TEX_HISTORY, t(in).id());
-    glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());
     glBindSampler(TEX_HISTORY, bilinear_.id());
     glBindSampler(TEX_HISTORY_STATS, bilinear_.id());
     bind_out(IMG_OUT, t(out));
