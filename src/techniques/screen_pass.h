@@ -2,7 +2,9 @@
 // parameters: `none` (techniques/none.cpp) and the floor pass the speed figures divide by
 // (eval/runner.cpp). The pass is timed under the technique's name.
 #pragma once
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shared/bindings.h"
