@@ -32,17 +32,26 @@ bool ppr_mirror_crossing(vec3 x, vec4 plane, out vec3 hit) {
   return dist > 0.0 && t > 0.0 && t < 1.0;
 }
 
+// Where on screen the camera sees world point `hit` (continuous pixel coordinates); false off
+// screen.
+bool ppr_destination(vec3 hit, out vec2 dest) {
+  vec2 uv;
+  float depth;
+  dest = vec2(0.0);
+  if (!project_to_uv((frame.view * vec4(hit, 1.0)).xyz, uv, depth) || !uv_on_screen(uv)) return false;
+  dest = uv * frame.viewport.xy;
+  return true;
+}
+
 // Projects source pixel p (G-buffer g) through reflector k (r), whose plane the camera sees its
 // mirror image through at `hit`; true when a destination pixel took it.
 bool ppr_project_onto(ivec2 p, GSample g, int k, PprReflector r, vec3 hit) {
   vec3 local = hit - r.center.xyz;
   if (abs(dot(local, r.tangent.xyz)) > r.tangent.w || abs(dot(local, r.bitangent.xyz)) > r.bitangent.w)
     return false;  // outside the rectangle
-  vec2 uv;
-  float depth;
-  if (!project_to_uv((frame.view * vec4(hit, 1.0)).xyz, uv, depth) || !uv_on_screen(uv)) return false;
+  vec2 dest;
+  if (!ppr_destination(hit, dest)) return false;
   ivec2 size = ivec2(frame.viewport.xy);
-  vec2 dest = uv * frame.viewport.xy;  // continuous pixel coordinates
   ivec2 q = ivec2(dest);
   // The destination must show this reflector (not an occluder, not another reflector).
   if (texelFetch(g_material, q, 0).x != uint(k + 1)) return false;

@@ -22,7 +22,7 @@ struct PprParams {
 // One planar reflector, oriented for the frame: `plane.xyz` faces the camera.
 struct PprReflector {
   vec4 plane;      // world n.xyz (unit, towards the camera), d: dot(n, x) + d = 0 on the plane
-  vec4 center;     // world centre, w unused
+  vec4 center;     // world centre; w: one past the last of the consecutive reflectors on this plane (an index)
   vec4 tangent;    // unit tangent, w = half extent along it
   vec4 bitangent;  // unit bitangent, w = half extent along it
 };

@@ -11,10 +11,11 @@ layout(std430, binding = SSBO_PPR_REFLECTORS) readonly buffer Reflectors { PprRe
 layout(binding = IMG_PPR_INTERMEDIATE, r32ui) uniform coherent uimage2D intermediate;
 layout(location = 0) uniform uint u_fraction_bits;
 
-// Every pixel reads every reflector. A single one comes from a uniform block (its fields become
-// constant operands); several are copied once per work group into shared memory, sized for the
-// most a scene may have (a 64-entry copy made the pass slower even with one reflector; the
-// uniform block indexed by the loop ran 4x slower with 16: docs/RESULTS.md, Speed).
+// Every pixel reads the first reflector of each plane and the one it lands on. A single one
+// comes from a uniform block (its fields become constant operands); several are copied once per
+// work group into shared memory, sized for the most a scene may have (a 64-entry copy made the
+// pass slower even with one reflector; the uniform block indexed by the loop ran 4x slower with
+// 16: docs/RESULTS.md, Speed).
 layout(std140, binding = UBO_PPR_REFLECTORS) uniform FirstReflector { PprReflector first_reflector; };
 #define SHARED_REFLECTORS PPR_MAX_REFLECTORS
 shared PprReflector group_reflectors[SHARED_REFLECTORS];
@@ -37,23 +38,21 @@ void main() {
   GSample g = gbuffer_fetch(p);
   if (is_background(g.depth)) return;
   vec3 x = view_to_world_pos(g.pos_vs);
-  // Every reflector: a projection that misses one must not stop the others (ARCHITECTURE §9).
-  // Consecutive reflectors on one plane (a tiled floor) share the mirror image and where the
-  // camera sees it: computed once per plane, then only each rectangle is tested.
-  vec4 plane = vec4(0.0);
-  bool seen = false;     // `plane` holds a computed plane
-  vec3 hit = vec3(0.0);
-  bool crosses = false;  // the mirror image is visible through the plane (at `hit`)
-  for (int k = 0; k < params.reflector_count; ++k) {
+  // Every plane: a projection that misses one must not stop the others (ARCHITECTURE §9).
+  // Consecutive reflectors on one plane (a tiled floor) share the mirror image, and only the
+  // one the destination pixel shows can take it: that one is read off the G-buffer there
+  // instead of testing every rectangle of the plane.
+  for (int k = 0; k < params.reflector_count;) {
     PprReflector r = reflector(k);
-    if (!seen || r.plane != plane) {
-      plane = r.plane;
-      seen = true;
-      crosses = ppr_mirror_crossing(x, plane, hit);
+    int end = max(int(r.center.w), k + 1);  // one past this plane's last reflector
+    vec3 hit;
+    if (ppr_mirror_crossing(x, r.plane, hit)) {  // else behind the mirror
+      int m = k;
+      vec2 dest;
+      if (end - k > 1) m = ppr_destination(hit, dest) ? int(texelFetch(g_material, ivec2(dest), 0).x) - 1 : -1;
+      if (m >= k && m < end && uint(m + 1) != g.reflector)  // not the reflector it lies on
+        ppr_project_onto(p, g, m, m == k ? r : reflector(m), hit);
     }
-    if (!crosses || uint(k + 1) == g.reflector) continue;  // behind the mirror, or on it
-    // Once a destination pixel took it, the rest of this plane's reflectors would land on that
-    // same pixel, which shows this one: skip them (a tiled floor tests half its tiles on average).
-    if (ppr_project_onto(p, g, k, r, hit)) crosses = false;
+    k = end;
   }
 }
