@@ -100,10 +100,25 @@ void main() {
   Accum a = Accum(vec4(0.0), 0.0, 0.0, 0.0, 0.0, 0.0);
   // Its own ray, if any; else the nearest rays around it (the upsample).
   float firefly = firefly_strength(p, g);
-  add_ray(a, g, v, p, 1.0, glossy, firefly);
   int d = pass.trace.x;
   bool own = c == CLASS_TRACED && (d == 1 || p == (p / d) * d + pass.trace.yz);
-  if (!own || a.weight == 0.0)
+  if (d == 2 && !own) {
+    // Half resolution: the traced pixels form a grid (one per 2x2 block, the same corner in
+    // every block), so a pixel between them takes the 2 or 4 around it, bilinearly, each
+    // weighed by its geometric likeness too (a depth-aware bilinear upsample).
+    vec2 f = vec2(p - pass.trace.yz) * 0.5;
+    ivec2 t0 = ivec2(floor(f));
+    vec2 b = f - vec2(t0);  // 0 or 0.5 per axis
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        float k = (i == 0 ? 1.0 - b.x : b.x) * (j == 0 ? 1.0 - b.y : b.y);
+        if (k > 0.0) add_ray(a, g, v, (t0 + ivec2(i, j)) * 2 + pass.trace.yz, k, glossy, firefly);
+      }
+  } else {
+    add_ray(a, g, v, p, 1.0, glossy, firefly);
+  }
+  // No ray of its own or from the grid (an edge, a reused quad pixel): the 3x3 around it.
+  if ((d == 1 && !own) || a.weight == 0.0)
     for (int y = -1; y <= 1; ++y)
       for (int x = -1; x <= 1; ++x)
         if (x != 0 || y != 0) add_ray(a, g, v, p + ivec2(x, y) * d, 0.5, glossy, firefly);
