@@ -43,4 +43,11 @@ std::string read_file(const fs::path& path, std::uintmax_t cap, const std::strin
   return text;
 }
 
+std::string read_text_file(const fs::path& path, std::uintmax_t cap, const std::string& what,
+                           const std::string& context) {
+  std::string text = read_file(path, cap, what, context);
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  return text;
+}
+
 }  // namespace ssr::files

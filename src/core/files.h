@@ -21,4 +21,9 @@ inline std::string q(const std::filesystem::path& p) { return q(std::string_view
 std::string read_file(const std::filesystem::path& path, std::uintmax_t cap, const std::string& what,
                       const std::string& context = "");
 
+// read_file for text (OBJ, MTL, JSON): without a leading UTF-8 byte-order mark, which editors on
+// Windows write and which would otherwise become part of the first line's keyword.
+std::string read_text_file(const std::filesystem::path& path, std::uintmax_t cap, const std::string& what,
+                           const std::string& context = "");
+
 }  // namespace ssr::files

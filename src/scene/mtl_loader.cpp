@@ -106,7 +106,7 @@ int add_image(Scene& scene, LoadContext& ctx, const fs::path& path, const std::s
 // ---- MTL ------------------------------------------------------------------------------------
 
 void parse_mtl(const fs::path& path, std::vector<MtlMaterial>& out, const std::string& context) {
-  const std::string text = read_file(path, kMaxMtlBytes, "MTL file", context);
+  const std::string text = read_text_file(path, kMaxMtlBytes, "MTL file", context);
   if (text.find('\0') != std::string::npos)
     fail("MTL file " + q(path) + " contains a NUL byte (is it a binary file?)");
   std::vector<std::string_view> tok;

@@ -69,6 +69,7 @@ struct ObjScan {
   std::size_t nv = 0, nvt = 0, nvn = 0, triangles = 0, faces = 0;
   std::size_t meshes = 0;  // at most this many: runs of faces between o, g and usemtl lines
   std::vector<std::pair<std::string, std::size_t>> mtllibs;  // file name, line
+  std::vector<std::pair<std::string, std::size_t>> usemtls;  // material name, line
 };
 
 // Checks everything tinyobjloader rc10 does not: numbers, index ranges (relative indices
@@ -169,6 +170,10 @@ ObjScan scan_obj(const fs::path& path, std::string_view text) {
       }
     } else if (key == "o" || key == "g" || key == "usemtl") {
       run_open = false;
+      if (key == "usemtl") {
+        if (tok.size() < 2 || tok[1][0] == '#') fail(where() + "'usemtl' names no material");
+        s.usemtls.emplace_back(std::string(tok[1]), line_no);  // tinyobjloader reads one token too
+      }
     } else if (key == "mtllib") {
       // Names separated by spaces; "\ " is a space inside a name (as in tinyobjloader).
       std::string_view rest = line.substr(static_cast<std::size_t>(key.data() - line.data()) + 6);
@@ -267,7 +272,7 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     fail("OBJ file " + q(path) + ": the transform is singular (a zero scale?)");
   const glm::mat3 normal_matrix = glm::transpose(glm::inverse(linear));
 
-  const std::string text = read_file(path, kMaxObjBytes, "OBJ file");
+  const std::string text = read_text_file(path, kMaxObjBytes, "OBJ file");
   if (text.find('\0') != std::string::npos)
     fail("OBJ file " + q(path) + " contains a NUL byte (is it a binary file?)");
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
@@ -288,6 +293,16 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     const std::string context = "OBJ file " + q(path) + " line " + std::to_string(line) + ": ";
     const fs::path p = resolve_inside(root, path.parent_path(), lib, context, "MTL");
     if (mtl_files.insert(canonical_key(p)).second) parse_mtl(p, mtl, context);
+  }
+  // A name its MTL files do not define is a typo, not a request for the default material
+  // (without any mtllib, usemtl lines are only names: the default material, as documented).
+  if (!scan.mtllibs.empty() && material_override < 0) {
+    std::set<std::string> defined;
+    for (const MtlMaterial& m : mtl) defined.insert(m.name);
+    for (const auto& [name, line] : scan.usemtls)
+      if (!defined.count(name))
+        fail("OBJ file " + q(path) + " line " + std::to_string(line) + ": material " + q(name) +
+             " is not defined in its MTL files");
   }
 
   tinyobj::attrib_t attrib;

@@ -39,6 +39,7 @@ constexpr std::size_t kMaxTriangles = 50'000'000;  // per file and per scene
 using files::fail;
 using files::q;
 using files::read_file;
+using files::read_text_file;
 
 // ---- files and paths (mtl_loader.cpp) -------------------------------------------------------
 

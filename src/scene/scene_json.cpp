@@ -82,7 +82,7 @@ using json = nlohmann::json;
 constexpr std::uintmax_t kMaxJsonBytes = 16ull << 20;  // 16 MiB
 
 json parse_json_file(const fs::path& path) {
-  return parse_json_object(read_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
+  return parse_json_object(read_text_file(path, kMaxJsonBytes, "scene file"), "scene file " + q(path));
 }
 
 // "scale": a number or a v3, > 0 (1 when absent).

@@ -223,7 +223,7 @@ void save_preset(const std::filesystem::path& path, const ViewerPreset& preset) 
 }
 
 ViewerPreset load_preset(const std::filesystem::path& path) {
-  return preset_from_json_text(files::read_file(path, kMaxPresetBytes, "viewer preset"),
+  return preset_from_json_text(files::read_text_file(path, kMaxPresetBytes, "viewer preset"),
                                "viewer preset " + q(path));
 }
 

@@ -186,6 +186,40 @@ TEST(ObjLoad, SizeLimitsAndBinaryFiles) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ObjLoad, ByteOrderMarksAndUndefinedMaterials) {
+  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / "ssrlab_scene_io_bom";
+  std::filesystem::create_directories(dir);
+  auto write = [&](const char* name, const std::string& text) {
+    std::ofstream(dir / name, std::ios::binary) << text;
+    return (dir / name).string();
+  };
+  // A UTF-8 byte-order mark (Windows editors) is not part of the first line: the first vertex
+  // and the first newmtl survive it.
+  const std::string bom = "\xEF\xBB\xBF";
+  write("bom.mtl", bom + "newmtl red\nKd 1 0 0\n");
+  const std::string tri = "mtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nusemtl red\nf 1 2 3\n";
+  const Scene s = ssr::load_scene_obj(write("bom.obj", bom + "v 9 9 9\n" + tri));
+  const Scene plain = ssr::load_scene_obj(write("plain.obj", "v 9 9 9\n" + tri));
+  ASSERT_EQ(s.meshes.size(), 1u);
+  ASSERT_EQ(plain.meshes.size(), 1u);
+  ASSERT_EQ(s.meshes[0].vertices.size(), plain.meshes[0].vertices.size());
+  for (std::size_t i = 0; i < s.meshes[0].vertices.size(); ++i)
+    EXPECT_EQ(s.meshes[0].vertices[i].position, plain.meshes[0].vertices[i].position);
+  const ssr::Material* red = find_material(s, "red");
+  ASSERT_NE(red, nullptr);
+  EXPECT_EQ(red->albedo, glm::vec3(1, 0, 0));
+  // A usemtl name its MTL files do not define is a typo: file, line, name.
+  expect_message(input_error([&] {
+                   ssr::load_scene_obj(write("typo.obj", "mtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                         "usemtl rde\nf 1 2 3\n"));
+                 }),
+                 {"typo.obj", "line 5", "'rde'", "not defined"});
+  // Without any mtllib a usemtl line only names the part: the default material.
+  const Scene bare = ssr::load_scene_obj(write("bare.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n"));
+  EXPECT_NE(find_material(bare, "default"), nullptr);
+  std::filesystem::remove_all(dir);
+}
+
 struct BadFile {
   const char* file;  // under tests/data
   std::vector<std::string> fragments;
@@ -407,12 +441,11 @@ TEST(FuzzRegressions, ManyObjMaterialsLoadQuickly) {
   // builders, and the scene's materials for "default", once per face.
   constexpr int n = 20000;
   std::string mtl, obj = "mtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  for (int i = 0; i < 20 * n; ++i) obj += "f 1 2 3\n";  // before any usemtl: "default"
   for (int i = 0; i < n; ++i) {
     mtl += "newmtl m" + std::to_string(i) + "\n";
     obj += "usemtl m" + std::to_string(i) + "\nf 1 2 3\n";
   }
-  obj += "usemtl none\n";
-  for (int i = 0; i < 20 * n; ++i) obj += "f 1 2 3\n";
   fuzz_file("many.mtl", mtl);
   const auto path = fuzz_file("many.obj", obj);
   Scene s;
