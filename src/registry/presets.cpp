@@ -39,13 +39,14 @@ const std::vector<Preset>& presets() {
       {"stochastic-medium", "stochastic",
        {"stochastic.rays_per_quad=1", "stochastic.max_iterations=128", "stochastic.roughness_threshold=0.6",
         "stochastic.spatial_samples=6", "stochastic.spatial_radius=5", "stochastic.bilateral_radius=2"},
-       "full resolution, 2 rays per glossy quad, 128 iterations, rays below roughness 0.6, 6 reused rays"},
+       "full resolution, 1 ray per 2x2 quad above roughness 0.3, 128 iterations, rays below roughness 0.6, "
+       "6 reused rays"},
       {"stochastic-high", "stochastic",
-       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=8",
+       {"stochastic.rays_per_quad=4", "stochastic.roughness_threshold=1", "stochastic.spatial_samples=8",
         "stochastic.spatial_radius=6", "stochastic.bilateral_radius=2"},
        "the defaults: a ray per pixel at every roughness, auto iterations (128 on glossy rays), 8 reused rays"},
       {"stochastic-ultra", "stochastic",
-       {"stochastic.rays_per_quad=2", "stochastic.roughness_threshold=1", "stochastic.glossy_iterations=auto",
+       {"stochastic.rays_per_quad=4", "stochastic.roughness_threshold=1", "stochastic.glossy_iterations=auto",
         "stochastic.spatial_samples=16", "stochastic.spatial_radius=8", "stochastic.bilateral_radius=3",
         "stochastic.history=32"},
        "a ray per pixel at every roughness, auto iterations on every ray, 16 reused rays, 7x7 bilateral, "

@@ -7,6 +7,7 @@
 #include "core/errors.h"
 #include "techniques/technique.h"
 #include "techniques/assignments.h"
+#include "registry/presets.h"
 #include "registry/registry.h"
 
 using namespace ssr;
@@ -64,6 +65,22 @@ TEST(Params, Assignments) {
   EXPECT_THROW(apply_assignments(*t, {"linear.thickness"}), InputError); // no '='
   auto none = create_technique("none");
   EXPECT_THROW(apply_assignments(*none, {"none.x=1"}), InputError);
+}
+
+// A preset that says it is the defaults sets nothing else (stochastic-high set 2 rays per quad
+// above roughness 0.3 for a while, against the default 4, and still said so).
+TEST(Params, PresetsCalledTheDefaultsAreTheDefaults) {
+  int checked = 0;
+  for (const Preset& preset : presets()) {
+    if (preset.source.rfind("the defaults", 0) != 0) continue;
+    SCOPED_TRACE(preset.name);
+    auto t = create_technique(preset.technique);
+    apply_assignments(*t, preset.assignments);
+    ParamSet p = t->params();
+    for (std::size_t i = 0; i < p.size(); ++i) EXPECT_EQ(p.get(i), p.get_default(i)) << p.key(i);
+    ++checked;
+  }
+  EXPECT_GE(checked, 1);  // stochastic-high
 }
 
 TEST(Params, RegistryTablesAreWellFormed) {
