@@ -36,14 +36,26 @@ int list_scenes() {
 }
 
 int list_techniques() {
+  // Columns as wide as their longest entry over every technique (keys such as
+  // linear-binary.backface_thickness and ranges such as none|4-neighbour|8-neighbour are long).
+  int key_w = 0, default_w = 0, range_w = 0;
+  for (const TechniqueInfo& info : technique_registry()) {
+    auto t = info.create();
+    ParamSet p = t->params();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      key_w = std::max(key_w, static_cast<int>(p.key(i).size()));
+      default_w = std::max(default_w, static_cast<int>(p.default_string(i).size()));
+      range_w = std::max(range_w, static_cast<int>(p.range_string(i).size()));
+    }
+  }
   for (const TechniqueInfo& info : technique_registry()) {
     auto t = info.create();
     ParamSet p = t->params();
     std::printf("%s\n  %s\n", info.name.c_str(), info.description.c_str());
     for (std::size_t i = 0; i < p.size(); ++i) {
       const ParamDesc& d = p.table()[i];
-      std::printf("  %-28s default %-8s range %-18s %s%s%s%s\n", p.key(i).c_str(),
-                  p.default_string(i).c_str(), p.range_string(i).c_str(), d.help,
+      std::printf("  %-*s default %-*s range %-*s %s%s%s%s\n", key_w, p.key(i).c_str(), default_w,
+                  p.default_string(i).c_str(), range_w, p.range_string(i).c_str(), d.help,
                   *d.unit ? " (" : "", d.unit, *d.unit ? ")" : "");
     }
   }

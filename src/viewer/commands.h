@@ -22,7 +22,7 @@
   X(Technique, "technique", Technique, "NAME", "technique A")                                           \
   X(TechniqueB, "technique-b", Technique, "NAME", "technique B")                                        \
   X(Set, "set", Assignment, "TECH.KEY=VALUE", "a parameter of A or B (the prefix says which)")          \
-  X(Preset, "preset", PresetName, "NAME", "technique A set up by a named preset of the CLI (ssrlab presets, e.g. thesis-hq)") \
+  X(Preset, "preset", PresetName, "NAME", "technique A set up by a named preset of the CLI (listed by ssrlab techniques, e.g. thesis-hq)") \
   X(Swap, "swap", None, "", "swap techniques A and B, with their parameters")                            \
   X(Compare, "compare", Compare, "off|split|diff|grid", "A alone, A | B, |A - B|, or the 2x2 grid (kCompareModes)") \
   X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \
