@@ -3,10 +3,14 @@
 // and SVG plots (error vs time, time vs resolution, time vs the swept parameter).
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <map>
 #include <regex>
+#include <set>
 
 #include <CLI/CLI.hpp>
 
@@ -30,7 +34,7 @@ namespace {
 struct BenchOptions {
   std::string scenes;                 // comma-separated
   std::vector<std::string> scene_list;  // --scene, repeatable (for names with options and commas)
-  std::string techniques;  // default: every technique but reference and planar
+  std::optional<std::string> techniques;  // not given: every technique but reference and planar
   std::vector<std::string> presets;
   std::vector<std::string> sets;
   std::vector<std::string> sweeps;
@@ -65,10 +69,19 @@ void progress(std::size_t done, std::size_t total, const std::string& what) {
   std::fflush(stdout);
 }
 
+// The plots beside --plot are named after it, the plot's kind, the scene and the size. A scene's
+// name comes from its file, so anything but letters, digits, '.', '-' and '_' becomes '_'.
+std::string plot_path(const std::string& plot, const std::string& kind, const std::string& scene,
+                      const std::string& size = "") {
+  const fs::path base(plot);
+  std::string slug = scene;
+  for (char& ch : slug)
+    if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '.' && ch != '-' && ch != '_') ch = '_';
+  return (base.parent_path() / base.stem()).string() + "-" + kind + "-" + slug + (size.empty() ? "" : "-" + size) + ".svg";
+}
+
 void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
                  const std::vector<Variant>& variants, const std::string& clock) {
-  const fs::path base(o.plot);
-  const std::string stem = (base.parent_path() / base.stem()).string();
   std::vector<std::string> written;
   auto write = [&](const std::string& path, const PlotSpec& spec) {
     write_text_file_atomic(path, svg_plot(spec));
@@ -111,8 +124,8 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
       if (!rest.points.empty()) fronts.push_back(rest);
     }
     pareto.series = fronts;
-    const std::string suffix = "-" + run.scene + "-" + size_name(run.width, run.height) + ".svg";
-    write(r == 0 ? o.plot : stem + "-pareto" + suffix, pareto);  // the first run: the --plot file
+    const std::string size = size_name(run.width, run.height);
+    write(r == 0 ? o.plot : plot_path(o.plot, "pareto", run.scene, size), pareto);  // the first run: the --plot file
     // Time vs the swept parameter, per technique with a sweep.
     PlotSpec sweep{"Time vs swept parameter, " + where, "parameter value", "time (ms, " + clock + ")", false, false, {}};
     for (std::size_t i = 0; i < run.results.size(); ++i) {
@@ -124,7 +137,7 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
       for (const auto& [k, v] : t.params)
         if (k == name) it->points.push_back({std::stod(v), t.time_ms.median});
     }
-    if (!sweep.series.empty()) write(stem + "-sweep" + suffix, sweep);
+    if (!sweep.series.empty()) write(plot_path(o.plot, "sweep", run.scene, size), sweep);
   }
   // Time vs resolution: per scene, per technique (first variant of each), when several sizes ran.
   std::map<std::string, PlotSpec> by_scene;
@@ -148,7 +161,7 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
   for (auto& [scene, spec] : by_scene) {
     bool several = false;
     for (const PlotSeries& s : spec.series) several |= s.points.size() > 1;
-    if (several) write(stem + "-resolution-" + scene + ".svg", spec);
+    if (several) write(plot_path(o.plot, "resolution", scene), spec);
   }
   for (const std::string& p : written) std::printf("plot: %s\n", p.c_str());
 }
@@ -178,6 +191,25 @@ int run_bench(const BenchOptions& o) {
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
+  if (!o.plot.empty()) {
+    // Every plot write_plots() may write beside --plot, checked against the other outputs now:
+    // not after the runs, with half the files written.
+    std::vector<std::pair<std::string, std::string>> outputs = {{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}};
+    std::set<std::string> planned;
+    auto plan = [&](const std::string& what, const std::string& path) {
+      if (planned.insert(path).second) outputs.emplace_back("--plot's " + what + " plot", path);
+    };
+    const bool swept = std::any_of(variants.begin(), variants.end(), [](const Variant& v) { return !v.swept_keys.empty(); });
+    for (std::size_t i = 0; i < scenes.size(); ++i)
+      for (std::size_t j = 0; j < sizes.size(); ++j) {
+        const std::string size = size_name(sizes[j].first, sizes[j].second);
+        if (i + j > 0) plan("pareto", plot_path(o.plot, "pareto", scenes[i].name, size));
+        if (swept) plan("sweep", plot_path(o.plot, "sweep", scenes[i].name, size));
+      }
+    if (sizes.size() > 1)
+      for (const Scene& scene : scenes) plan("resolution", plot_path(o.plot, "resolution", scene.name));
+    require_output_files(outputs);
+  }
 
   auto ctx = open_gl(o.gl, sizes);
   const gl::ContextInfo& gi = ctx->info();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -26,7 +27,7 @@ namespace {
 
 struct CompareOptions {
   std::string scene = "gallery";
-  std::string techniques;  // default: every technique but the reference
+  std::optional<std::string> techniques;  // not given: every technique but the reference
   std::vector<std::string> presets;
   std::vector<std::string> sets;
   std::string size = "640x360";

@@ -71,6 +71,12 @@ int run_render(const RenderOptions& o) {
     throw InputError("--view classes needs --technique reference.");
   if ((classes_view || hits_view) && format != ImageFormat::Png)
     throw InputError("--view " + o.view + " writes a .png.");
+  const std::vector<std::string> views = view_mode_names();
+  if (!classes_view && !hits_view && std::find(views.begin(), views.end(), o.view) == views.end()) {
+    std::string known;
+    for (const std::string& v : views) known += v + ", ";
+    throw InputError("unknown view '" + o.view + "' (known: " + known + "classes, hit-classes).");
+  }
   const ViewMode view = classes_view || hits_view ? ViewMode::Final : parse_view_mode(o.view);
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
@@ -174,8 +180,10 @@ Command add_render_command(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* c = app.add_subcommand("render", "Render one frame of a scene with a technique.");
   c->add_option("--scene", o->scene, "Built-in scene name or a .json/.obj path.")->capture_default_str();
-  c->add_option("--technique", o->technique, "Technique name (see `ssrlab techniques`).")->capture_default_str();
-  c->add_option("--preset", o->preset, "A named parameter set (sets the technique too), e.g. thesis-hq.");
+  CLI::Option* technique = c->add_option("--technique", o->technique, "Technique name (see `ssrlab techniques`).")->capture_default_str();
+  // A preset names its technique: a second one given beside it would be silently ignored.
+  c->add_option("--preset", o->preset, "A named parameter set (sets the technique, so not with --technique), e.g. thesis-hq.")
+      ->excludes(technique);
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable).");
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");

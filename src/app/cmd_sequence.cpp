@@ -2,8 +2,10 @@
 // against each frame's truth, with temporal metrics; JSON, optional PNG frames, video and plots.
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -26,11 +28,16 @@ namespace fs = std::filesystem;
 namespace ssr {
 namespace {
 
+// Ctrl-C or a kill while frames or a video are written: the frame loop stops at the next frame
+// and unwinds, so the temporary frame directory and video are removed instead of left behind.
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void stop_at_next_frame(int signal) { g_stop_signal = signal; }
+
 struct SequenceOptions {
   std::string scene = "gallery";
   std::string path;  // default: the scene's path option, its first path, else "still"
   int frames = 0;
-  std::string techniques;
+  std::optional<std::string> techniques;  // not given: every technique but the reference
   std::vector<std::string> presets;
   std::vector<std::string> sets;
   std::vector<std::string> sweeps;
@@ -70,6 +77,10 @@ int run_sequence_command(const SequenceOptions& o) {
     if (!fs::is_directory(parent)) throw InputError("--out: the directory '" + parent.string() + "' does not exist.");
     if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
       throw InputError("--out '" + o.out + "' must be a new or empty directory.");
+    const fs::path out_path = fs::absolute(dir).lexically_normal();
+    for (const auto& [option, file] : {std::pair{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}})
+      if (!file.empty() && fs::absolute(file).lexically_normal() == out_path)
+        throw InputError(std::string(option) + " and --out name the same path '" + file + "'.");
   }
   Scene scene = load_scene(o.scene);
   SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps};
@@ -112,8 +123,15 @@ int run_sequence_command(const SequenceOptions& o) {
   reference->load(renderer.shaders());
   const bool images = video || !o.out.empty();
   std::function<void(const SequenceImages&)> on_frame;
+  if (images) {
+    std::signal(SIGINT, stop_at_next_frame);
+    std::signal(SIGTERM, stop_at_next_frame);
+  }
   if (images)
     on_frame = [&](const SequenceImages& im) {
+      if (g_stop_signal != 0)
+        throw RuntimeError("stopped by signal " + std::to_string(g_stop_signal) +
+                           "; the unfinished frames and video were removed.");
       const RgbaImage8 frame = compose(im, labels, w, h);
       if (video) video->add_frame(frame);
       if (!o.out.empty()) {
@@ -159,7 +177,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--fps", o->fps, "Frames per second of scene time.")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
   c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();
-  c->add_option("--out", o->out, "A new directory for the labelled PNG frames.");
+  c->add_option("--out", o->out, "A new (or empty) directory for the labelled PNG frames.");
   c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");
   c->add_option("--plot", o->plot, "SVG: PSNR per frame and flicker per frame.");
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();

@@ -21,8 +21,14 @@ ShaderSource::ShaderSource(std::optional<std::filesystem::path> dir) : dir_(std:
 
 ShaderSource ShaderSource::from_option(const std::string& dir) {
   if (dir.empty()) return ShaderSource();
-  if (!std::filesystem::is_directory(dir)) throw InputError("shader directory '" + dir + "' does not exist.");
-  return ShaderSource(std::filesystem::path(dir));
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) throw InputError("shader directory '" + dir + "' does not exist.");
+  if (!fs::is_directory(dir, ec)) throw InputError("'" + dir + "' given to --shaders is not a directory.");
+  // Checked here, before any GL work: every program starts from the G-buffer pass.
+  if (!fs::is_regular_file(fs::path(dir) / "render/gbuffer.vert", ec))
+    throw InputError("shader directory '" + dir + "' holds no render/gbuffer.vert (name a checkout's shaders/ folder).");
+  return ShaderSource(fs::path(dir));
 }
 
 ShaderSource ShaderSource::with_defines(std::vector<std::string> defines) const {
@@ -34,7 +40,7 @@ ShaderSource ShaderSource::with_defines(std::vector<std::string> defines) const 
 std::string ShaderSource::read(const std::string& path) const {
   if (dir_) {
     std::ifstream in(*dir_ / path, std::ios::binary);
-    if (!in) throw RuntimeError("shader file '" + (*dir_ / path).string() + "' does not exist.");
+    if (!in) throw InputError("shader file '" + (*dir_ / path).string() + "' does not exist (the --shaders directory lacks it).");
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();

@@ -116,8 +116,9 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   return out;
 }
 
-std::vector<std::string> technique_names(const std::string& list, const std::vector<std::string>& also_left_out) {
-  if (!list.empty()) return split_list(list, "technique");
+std::vector<std::string> technique_names(const std::optional<std::string>& list,
+                                         const std::vector<std::string>& also_left_out) {
+  if (list) return split_list(*list, "technique");  // given empty: an error, not "all"
   std::vector<std::string> names;
   for (const TechniqueInfo& t : technique_registry())
     if (!t.truth && std::find(also_left_out.begin(), also_left_out.end(), t.name) == also_left_out.end())

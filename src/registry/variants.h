@@ -1,6 +1,7 @@
 // What `compare` and `bench` run: techniques x parameter sweeps, plus named presets.
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,9 @@ std::vector<std::string> sets_for(const std::string& technique, const std::vecto
 // "a,b,c" -> {a, b, c}; empty items are an error.
 std::vector<std::string> split_list(const std::string& text, const std::string& what);
 
-// The techniques a command runs: the --techniques list, or (empty) every registered technique
+// The techniques a command runs: the --techniques list, or (not given) every registered technique
 // except the reference and those named in `also_left_out`.
-std::vector<std::string> technique_names(const std::string& list, const std::vector<std::string>& also_left_out = {});
+std::vector<std::string> technique_names(const std::optional<std::string>& list,
+                                         const std::vector<std::string>& also_left_out = {});
 
 }  // namespace ssr

@@ -74,6 +74,16 @@ expect_exit 2 render $S --exposure abc --out "$tmp/out.png"
 expect_exit 2 render $S --gl vulkan --out "$tmp/out.png"
 expect_exit 2 render $S
 expect_exit 2 nosuchcommand
+# Found by a review: a preset beside --technique (one was silently ignored), --shaders naming a
+# file or a folder without shaders, an empty --techniques list (it ran every technique), the
+# extra plots beside --plot colliding with --json (found only after every run).
+expect_exit 2 render --technique dda --preset thesis-hq $S --out "$tmp/out.png"
+expect_exit 2 render --shaders "$TESTDATA/json/minimal.json" $S --out "$tmp/out.png"
+mkdir -p "$tmp/empty_shaders"
+expect_exit 2 render --shaders "$tmp/empty_shaders" $S --out "$tmp/out.png"
+expect_exit 2 compare --techniques "" $S --out "$tmp/out.png"
+expect_exit 2 bench --techniques linear --sizes 32x18 --sweep linear.max_steps=8,16 --frames 1 --warmup 0 \
+  --json "$tmp/out.b-sweep-gallery-32x18.svg" --plot "$tmp/out.b.svg"
 for f in "$TESTDATA"/json/bad_* "$TESTDATA"/obj/bad_*; do
   [ -e "$f" ] || continue
   expect_exit 2 render --scene "$f" $S --out "$tmp/out.png"

@@ -82,5 +82,27 @@ bad --scene gallery --frames 2 --video "$tmp/missing-dir/v.mp4"
 bad --scene gallery --frames 2 --video "$tmp/bad/v.gif"
 bad --scene gallery --frames 2 --out "$tmp"
 bad --scene gallery --frames 2 --techniques nothing
+bad --scene gallery --frames 2 --techniques ""
+bad --scene gallery --frames 2 --out "$tmp/bad/r.json"  # the --json file of bad()
 NO_FFMPEG=1 bad --scene gallery --frames 2 --video "$tmp/bad/v.mp4"
+
+# A signal while frames and a video are written: they are removed, not left as temporaries.
+stopped="$tmp/stopped"
+mkdir "$stopped"
+"$SSRLAB" sequence --size 64x36 --frames 100000 --techniques none --json "$stopped/s.json" \
+  --out "$stopped/frames" 2> "$stopped/err.txt" > /dev/null &
+pid=$!
+waited=0
+until ls "$stopped"/frames.tmp*/frame_* > /dev/null 2>&1 || [ $waited -ge 600 ]; do  # the first frame (a minute at most)
+  sleep 0.1
+  waited=$((waited + 1))
+done
+kill -INT $pid
+set +e
+wait $pid
+rc=$?
+set -e
+[ $rc -eq 1 ] || { echo "a stopped sequence exited $rc, not 1"; cat "$stopped/err.txt"; exit 1; }
+grep -q "stopped by signal 2" "$stopped/err.txt" || { echo "no stop message"; cat "$stopped/err.txt"; exit 1; }
+[ "$(ls "$stopped")" = "err.txt" ] || { echo "files left behind by a stopped sequence:"; ls "$stopped"; exit 1; }
 echo "sequence: ok"
