@@ -67,17 +67,20 @@ int run_render(const RenderOptions& o) {
   // scores the technique against it: correct / false / missed hits.
   const bool classes_view = o.view == "classes";
   const bool hits_view = o.view == "hit-classes";
+  // "difference": |technique - truth| on reflective pixels, the compare grid's bottom row.
+  const bool diff_view = o.view == "difference";
+  const bool scored_view = hits_view || diff_view;  // these run the reference too
   if (classes_view && !technique_info(o.technique).truth)
     throw InputError("--view classes needs --technique reference.");
-  if ((classes_view || hits_view) && format != ImageFormat::Png)
+  if ((classes_view || scored_view) && format != ImageFormat::Png)
     throw InputError("--view " + o.view + " writes a .png.");
   const std::vector<std::string> views = view_mode_names();
-  if (!classes_view && !hits_view && std::find(views.begin(), views.end(), o.view) == views.end()) {
+  if (!classes_view && !scored_view && std::find(views.begin(), views.end(), o.view) == views.end()) {
     std::string known;
     for (const std::string& v : views) known += v + ", ";
-    throw InputError("unknown view '" + o.view + "' (known: " + known + "classes, hit-classes).");
+    throw InputError("unknown view '" + o.view + "' (known: " + known + "classes, hit-classes, difference).");
   }
-  const ViewMode view = classes_view || hits_view ? ViewMode::Final : parse_view_mode(o.view);
+  const ViewMode view = classes_view || scored_view ? ViewMode::Final : parse_view_mode(o.view);
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   std::string technique_name = o.technique;
@@ -87,9 +90,9 @@ int run_render(const RenderOptions& o) {
     technique_name = p.technique;
     sets.insert(sets.begin(), p.assignments.begin(), p.assignments.end());
   }
-  // hit-classes runs the reference too: reference.* assignments are its.
-  const std::vector<std::string> reference_sets = hits_view ? sets_for(truth_name(), sets) : std::vector<std::string>{};
-  if (hits_view)
+  // hit-classes and difference run the reference too: reference.* assignments are its.
+  const std::vector<std::string> reference_sets = scored_view ? sets_for(truth_name(), sets) : std::vector<std::string>{};
+  if (scored_view)
     sets.erase(std::remove_if(sets.begin(), sets.end(), [](const std::string& s) {
                  return s.rfind("reference.", 0) == 0;
                }), sets.end());
@@ -105,13 +108,13 @@ int run_render(const RenderOptions& o) {
                        (fills.empty() ? std::string("it fills no debug view") : "its debug views: " + fills) + ").");
     }
   }
-  auto reference = hits_view ? create_technique(truth_name()) : nullptr;
+  auto reference = scored_view ? create_technique(truth_name()) : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
   FrameSettings settings;
   set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
-  if (hits_view && technique_info(technique_name).truth)
-    throw InputError("--view hit-classes scores a technique against the reference; name another technique.");
+  if (scored_view && technique_info(technique_name).truth)
+    throw InputError("--view " + o.view + " scores a technique against the reference; name another technique.");
 
   auto ctx = open_gl(o.gl, {{w, h}});
   Renderer renderer(scene, w, h, shaders);
@@ -121,6 +124,17 @@ int run_render(const RenderOptions& o) {
   technique->load(telemetry_view ? renderer.shaders().with_defines({"SSR_TELEMETRY"}) : renderer.shaders());
   if (telemetry_view) renderer.telemetry().begin(w, h);
 
+  if (diff_view) {
+    reference->load(renderer.shaders());
+    ScoredFrame frame(renderer, camera, *reference);
+    const ScoredFrame::Score s = frame.score(*technique);
+    write_png(o.out, heat_map(s.display, frame.truth(), frame.classes()));
+    std::printf("wrote %s (%dx%d, scene %s, technique %s, view difference, 0.25 = hottest): PSNR %.2f dB, "
+                "traceable %.2f dB\n",
+                o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), s.error.psnr,
+                s.error.psnr_traceable);
+    return s.error.nonfinite ? 1 : 0;
+  }
   if (hits_view) {
     reference->load(renderer.shaders());
     ScoredFrame frame(renderer, camera, *reference);
@@ -190,7 +204,7 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
   std::string views;
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
-  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only)|hit-classes (a technique against the reference).")->capture_default_str();
+  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only)|hit-classes (a technique against the reference)|difference (|technique - truth|, 0.25 = hottest).")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");

@@ -47,7 +47,12 @@ expect_exit 0 render --technique hiz --set hiz.denoise=true $S --view temporal -
 # Half resolution on an image 1 pixel high: the half grid rounds up (1 row), documented.
 expect_exit 0 render --technique stochastic --size 3x1 --set stochastic.half_resolution=true --out "$tmp/s.exr"
 
+expect_exit 0 render --technique linear --view difference $S --out "$tmp/d.png"
+grep -q "view difference" "$tmp/stdout" && [ -s "$tmp/d.png" ] && ok || bad "render --view difference wrote no PNG"
+
 # --- bad input: one sentence, exit 2, nothing written -----------------------------------------
+expect_exit 2 render --technique reference --view difference $S --out "$tmp/out.png"
+expect_exit 2 render --technique linear --view difference $S --out "$tmp/out.exr"
 expect_exit 2 render --scene nope $S --out "$tmp/out.png"
 expect_exit 2 render --scene "$tmp/missing.json" $S --out "$tmp/out.png"
 expect_exit 2 render --technique nope $S --out "$tmp/out.png"
