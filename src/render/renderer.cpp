@@ -443,7 +443,15 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
     if (!writes && dirty) clear_texture(tex);
     dirty = writes;
   };
-  debug_written_ = debug && !decl.debug_views.empty();
+  // Only views of the debug image itself count: stage views show the technique's own textures
+  // and telemetry views the ray counts (stochastic declares those and writes no debug image, so
+  // the viewer's inspector showed the previous technique's steps as stochastic's).
+  const bool image_view = std::any_of(decl.debug_views.begin(), decl.debug_views.end(), [&](ViewMode v) {
+    const bool stage = std::any_of(decl.stage_views.begin(), decl.stage_views.end(),
+                                   [v](const StageView& s) { return s.view == v; });
+    return !stage && !view_info(v).telemetry;
+  });
+  debug_written_ = debug && image_view;
   clear_unless_written(debug_written_, debug_dirty_, debug_);
   clear_unless_written(decl.writes_refraction, refraction_dirty_, refraction_);
   const auto rebind = [this, &state] {

@@ -74,3 +74,17 @@ for (x, y), j in zip(pixels, probes[len(pixels):]):
     print(f'({x:3},{y:3}) class {j["class"]}, |hiz - truth| {j["a"]["error"]:.4f}')
 PY
 echo "viewer inspect ok"
+
+# A technique without a debug image of its own (stochastic: stage and telemetry views only)
+# reports no steps: it reported hiz's, read from the image hiz had left there.
+printf 'technique hiz\nframes 2\ninspect 160 150\ntechnique stochastic\nframes 2\ninspect 160 150\n' > stale.txt
+xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+  --script stale.txt > stale.log 2>&1 || { cat stale.log; exit 1; }
+python3 - <<'PY'
+import json, re
+probes = [json.loads(m) for m in re.findall(r'ssrlab-view: inspect (\{.*\})', open('stale.log').read())]
+assert len(probes) == 2 and 'steps' in probes[0]['a'], probes
+assert probes[1]['a']['technique'] == 'stochastic' and 'steps' not in probes[1]['a'], probes[1]['a']
+print('stochastic after hiz: no stale steps')
+PY
+echo "viewer inspect stale ok"
