@@ -58,7 +58,15 @@ void Viewer::on_Split(const std::string& a) {
 }
 
 void Viewer::on_View(const std::string& a) {
-  view_ = a == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(a));
+  const int view = a == "traceable" ? kViewTraceable : static_cast<int>(parse_view_mode(a));
+  // A debug view no shown technique fills would silently stay on the final image.
+  if (!view_offered(view)) {
+    std::string shown;
+    for (int i = 0; i < active_sides(); ++i) shown += (i ? ", " : "") + sides_[i].technique->name();
+    throw InputError(view == kViewTraceable ? "the traceable mask is one image: not in the grid."
+                                            : "view '" + a + "' is not filled by " + shown + " (see ssrlab views).");
+  }
+  view_ = view;
 }
 
 void Viewer::on_Exposure(const std::string& a) { set_frame_setting(renderer_->settings, "exposure", std::stod(a)); }
@@ -79,6 +87,12 @@ void Viewer::on_PresetLoad(const std::string& a) {
 
 void Viewer::on_Resize(const std::string& a) {
   const auto [w, h] = parse_size(a);
+  // Checked before the window changes: a window system clamps sizes (X to 16 bits), and the
+  // renderer would then refuse a size nobody asked for.
+  GLint max_side = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_side);
+  if (w > max_side || h > max_side)
+    throw InputError("size " + a + " is not supported by this GL (each side must be in [1, " + std::to_string(max_side) + "]).");
   window_->set_size(w + (panel_shown_ ? static_cast<int>(panel_w_) : 0), h + static_cast<int>(kStatusH));
 }
 
@@ -131,7 +145,8 @@ void Viewer::on_Inspect(const std::string& a) {
 void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : std::stoi(a); }
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
-// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr"}.
+// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr",
+// "psnr_truth" (the grid's A against its truth)}.
 void Viewer::on_Status(const std::string&) {
   nlohmann::json j;
   j["message"] = status_;
@@ -142,6 +157,8 @@ void Viewer::on_Status(const std::string&) {
   j["image"] = {image_w_, image_h_};
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
+  j["psnr_truth"] = figure_shown() && compare_ == CompareGrid && psnr_truth_valid_ ? nlohmann::json(psnr_truth_)
+                                                                                   : nlohmann::json(nullptr);
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -90,10 +91,15 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
       return;
     }
     case ArgForm::PresetName: find_preset(a); return;  // throws listing the names
-    case ArgForm::Png:
+    case ArgForm::Png: {
       if (std::filesystem::path(a).extension() != ".png")
         throw InputError(at + "screenshot '" + a + "' must end in .png.");
+      const std::filesystem::path dir = std::filesystem::absolute(a).parent_path();
+      std::error_code ec;
+      if (!std::filesystem::is_directory(dir, ec))
+        throw InputError(at + "the directory '" + dir.string() + "' of screenshot '" + a + "' does not exist.");
       return;
+    }
   }
 }
 

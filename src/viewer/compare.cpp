@@ -23,11 +23,16 @@ namespace ssr {
 
 namespace {
 
-// What a technique's image depends on besides the frame inputs: its name and parameter values.
-std::string technique_key(Technique& t) {
+// What a technique's image depends on besides the frame inputs: its name and parameter values,
+// and for a technique with history (persistent textures: it accumulates, its samples change
+// every frame) the frame itself, so that the PSNR follows its image as it settles.
+std::string technique_key(Technique& t, int frame_index) {
   std::string k = t.name();
   ParamSet p = t.params();
   for (std::size_t i = 0; i < p.size(); ++i) k += "," + p.to_string(i);
+  const TechniqueDecl decl = t.declare();
+  if (std::any_of(decl.textures.begin(), decl.textures.end(), [](const TextureDecl& d) { return d.persistent; }))
+    k += "|frame " + std::to_string(frame_index);
   return k;
 }
 
@@ -60,7 +65,7 @@ int Viewer::active_sides() const { return compare_ == CompareOff ? 1 : compare_ 
 
 bool Viewer::side_current(int i) const {
   const Side& s = sides_[i];
-  return s.valid && s.shown_key == frame_key() + "|" + technique_key(*s.technique);
+  return s.valid && s.shown_key == frame_key() + "|" + technique_key(*s.technique, frame_index_);
 }
 
 std::string Viewer::truth_state() const {
@@ -137,7 +142,10 @@ void Viewer::render() {
   advance_time();
   cut_ = cut_next_;
   cut_next_ = false;
-  if (!view_offered(view_)) view_ = VIEW_FINAL;  // the technique changed: its debug view is gone
+  if (!view_offered(view_)) {  // the technique changed: its debug view is gone
+    set_status("view '" + view_names_[static_cast<std::size_t>(view_)] + "' is not filled by the technique now shown: final image", true);
+    view_ = VIEW_FINAL;
+  }
   if (!composed_ || composed_.width() != W || composed_.height() != H) {
     composed_ = gl::Texture2D("viewer composed", GL_RGBA8, W, H);
     glTextureParameteri(composed_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // the magnifier shows pixels
@@ -169,7 +177,7 @@ void Viewer::render() {
   renderer_->debug_outputs = inspector_open_ || inspected_;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
-    const std::string key = fkey + "|" + technique_key(*s.technique);
+    const std::string key = fkey + "|" + technique_key(*s.technique, frame_index_);
     // On-demand techniques run when asked, once the camera rests (auto), on every changed frame
     // (live, and in scripted runs). One frame says "computing" first.
     if (on_demand(i) && s.request == 0 && s.shown_key != key && truth_policy_ == TruthPolicy::Rest && rested)
@@ -246,15 +254,24 @@ void Viewer::render() {
   }
   // PSNR of A vs B, on the CPU, whenever either image changed, from the current frame only.
   if (compare_ != CompareOff && side_current(0) && side_current(1)) {
-    const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key;
+    const bool truth = grid && side_current(2);
+    const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key + (truth ? "#" + sides_[2].shown_key : "");
     if (key != psnr_key_) {
       // The shared metric code over compare's pixels: the final image's display values on the
       // reflective pixels of this frame's G-buffer (both sides ran on it: the key holds the frame).
       std::optional<double> p;
+      psnr_truth_valid_ = false;
       if (view_ == VIEW_FINAL) {
         const float exposure = renderer_->settings.exposure;
-        p = psnr_where(display_values(renderer_->read_texture(sides_[0].color), exposure),
-                       display_values(renderer_->read_texture(sides_[1].color), exposure), reflective_pixels(*renderer_));
+        const RgbaImageF a = display_values(renderer_->read_texture(sides_[0].color), exposure);
+        const std::vector<bool> reflective = reflective_pixels(*renderer_);
+        p = psnr_where(a, display_values(renderer_->read_texture(sides_[1].color), exposure), reflective);
+        if (truth) {
+          const std::optional<double> t =
+              psnr_where(a, display_values(renderer_->read_texture(sides_[2].color), exposure), reflective);
+          psnr_truth_valid_ = t.has_value();
+          psnr_truth_ = t.value_or(0.0);
+        }
       }
       psnr_valid_ = p.has_value();
       psnr_ = p.value_or(0.0);
@@ -265,7 +282,7 @@ void Viewer::render() {
       }
     }
   } else {
-    psnr_valid_ = false;
+    psnr_valid_ = psnr_truth_valid_ = false;
     psnr_key_.clear();
   }
 }

@@ -288,8 +288,8 @@ void draw_view_legend(const ViewInfo& view, float exposure) {
   }
 }
 
-void draw_difference_legend(float full_scale) {
-  ImGui::TextUnformatted("difference |A - B| (display values, mean of RGB)");
+void draw_difference_legend(float full_scale, const char* what) {
+  ImGui::TextWrapped("difference %s (display values, mean of RGB)", what);
   colour_bar([](float t) { return shared::heat(t); }, full_scale, "of full white", true);
 }
 

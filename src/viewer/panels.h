@@ -36,7 +36,7 @@ bool draw_camera_panel(Camera& camera);
 // difference view's heat scale, the reference's class colours (eval/grid.h's class_colour).
 // The bars are drawn with shared/colormap.h, the function the image was drawn with.
 void draw_view_legend(const ViewInfo& view, float exposure);
-void draw_difference_legend(float full_scale);
+void draw_difference_legend(float full_scale, const char* what = "|A - B|");
 void draw_class_legend();
 
 // The status bar's line: two toggles (panel, keys), the latest message (errors red, clipped to

@@ -280,7 +280,9 @@ void Viewer::status_bar(double dt) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
   ImGui::Begin("##status", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
-  StatusLine line{status_, status_error_, truth_state() == "none" ? "" : truth_state(), dt * 1000.0,
+  // A frame drawn again for a window-shot (dt 0) shows the last timed frame's figure.
+  const double frame_ms = dt > 0.0 ? dt * 1000.0 : frame_ms_.empty() ? 0.0 : frame_ms_.back();
+  StatusLine line{status_, status_error_, truth_state() == "none" ? "" : truth_state(), frame_ms,
                   clock_ == gl::PassTimer::Clock::Gpu, window_->info().renderer};
   const StatusActions act = draw_status_line(line, panel_shown_);
   if (act.toggle_panel) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
@@ -318,7 +320,7 @@ void Viewer::legend() {
   if (compare_ == CompareDiff && view_ != kViewTraceable) draw_difference_legend(diff_scale_);
   else if (view_ == kViewTraceable) draw_class_legend();
   else draw_view_legend(view_table()[static_cast<std::size_t>(view_)], renderer_->settings.exposure);
-  if (compare_ == CompareGrid) draw_difference_legend(diff_scale_);  // the grid's fourth cell
+  if (compare_ == CompareGrid) draw_difference_legend(diff_scale_, "|A - truth| (the fourth cell)");
 }
 
 // --- the side panel ------------------------------------------------------------------------
@@ -339,6 +341,10 @@ void Viewer::side_panel(double dt) {
       else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("final image, reflective pixels, display values: compare's 'PSNR' when B is the reference");
+      if (compare_ == CompareGrid && psnr_truth_valid_) {  // what the grid's fourth cell shows
+        if (psnr_truth_ >= kPsnrCap) ImGui::Text("PSNR A vs truth: identical");
+        else ImGui::Text("PSNR A vs truth: %.2f dB", psnr_truth_);
+      }
     } else if (truth_state() == "stale" || truth_state() == "computing") {
       ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "PSNR A vs B: - (%s is %s)", sides_[1].technique->name().c_str(),
                          truth_state().c_str());
@@ -628,6 +634,7 @@ bool Viewer::view_offered(int view) const {
   if (view >= static_cast<int>(view_table().size())) return true;
   const ViewInfo& v = view_table()[static_cast<std::size_t>(view)];
   if (!v.debug) return true;
+  if (compare_ == CompareGrid) return false;  // the grid sets A against its truth, which has no debug views
   for (int i = 0; i < active_sides(); ++i) {
     const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
     if (std::find(d.begin(), d.end(), v.mode) != d.end()) return true;

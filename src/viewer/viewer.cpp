@@ -284,8 +284,10 @@ void Viewer::frame(double dt) {
   glBlitNamedFramebuffer(blit_fbo_.id(), 0, 0, 0, image_w_, image_h_, 0, fb_h_ - image_h_, image_w_, fb_h_,
                          GL_COLOR_BUFFER_BIT, GL_NEAREST);
   present();
-  frame_ms_.push_back(static_cast<float>(dt * 1000.0));
-  while (frame_ms_.size() > 240) frame_ms_.pop_front();
+  if (dt > 0.0) {  // a frame drawn again for a window-shot or the inspector (dt 0) is not timed
+    frame_ms_.push_back(static_cast<float>(dt * 1000.0));
+    while (frame_ms_.size() > 240) frame_ms_.pop_front();
+  }
 }
 
 int Viewer::run() {
@@ -350,6 +352,8 @@ int Viewer::run() {
         execute(c);
       } catch (const InputError& e) {
         throw InputError(c.line > 0 ? script_where(script_name, c) + e.what() : e.what());
+      } catch (const RuntimeError& e) {  // the machine failed (a full disk): still say where
+        throw RuntimeError(c.line > 0 ? script_where(script_name, c) + e.what() : e.what());
       }
     }
     window_->poll();

@@ -180,6 +180,8 @@ class Viewer {
   std::string psnr_key_;
   double psnr_ = 0;
   bool psnr_valid_ = false;
+  double psnr_truth_ = 0;  // the grid: A against its truth (the fourth cell's figure)
+  bool psnr_truth_valid_ = false;
   // When the truth (an on-demand side) is recomputed: once the camera rests, on every changed
   // frame (playback plots the figure per frame; scripted runs start with it), or when asked.
   enum class TruthPolicy { Manual, Rest, Live } truth_policy_ = TruthPolicy::Rest;

@@ -29,3 +29,31 @@ print(f'hiz vs reference on gallery 320x180: viewer {viewer:.2f} dB, compare {cl
 assert abs(viewer - cli) <= 0.01, 'the viewer and compare disagree'
 PY
 echo "viewer figures ok"
+
+# A technique with history (stochastic) changes its image every frame on a still camera: the
+# figure follows it (it was computed once per camera and parameters, and stayed at frame 1's).
+# The grid also gives A against its truth, the figure of its fourth cell.
+cat > settle.txt <<'SCRIPT'
+technique stochastic
+technique-b hiz
+compare split
+frames 1
+status
+frames 6
+status
+compare grid
+set reference.samples=4
+frames 2
+status
+SCRIPT
+xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene cornell --size 320x180 \
+  --script settle.txt > settle.txt.log 2>&1 || { cat settle.txt.log; exit 1; }
+python3 - <<'PY'
+import json
+status = [json.loads(l.split('status ', 1)[1]) for l in open('settle.txt.log') if 'ssrlab-view: status ' in l]
+print('stochastic vs hiz after 1 and 7 frames:', [s['psnr'] for s in status[:2]], 'grid A vs truth:', status[2]['psnr_truth'])
+assert status[0]['psnr'] is not None and status[1]['psnr'] is not None
+assert status[0]['psnr'] != status[1]['psnr'], 'the PSNR did not follow a settling image'
+assert status[2]['psnr_truth'] is not None, 'the grid gave no A-vs-truth figure'
+PY
+echo "viewer settling figure ok"

@@ -130,4 +130,13 @@ expect2 'broken.json' --preset broken.json --frames 1
 expect2 'nosuch' --technique nosuch --frames 1
 expect2 'needs --frames' --screenshot shot.png
 expect2 'viewport limit\|window system' --size 100000x100 --frames 1
+# Found by a review: a debug view the shown technique does not fill (it stayed on the final
+# image without a word), a size the window system would clamp (it reported another width), a
+# screenshot into a missing directory (exit 1, no line).
+printf 'technique stochastic\nframes 1\nview steps\n' > bad5.txt
+expect2 'bad5.txt:3:.*not filled by stochastic' --script bad5.txt
+printf 'frames 1\nresize 100000x10\n' > bad6.txt
+expect2 'bad6.txt:2:.*100000x10 is not supported' --script bad6.txt
+printf 'frames 1\nscreenshot nowhere/x.png\n' > bad7.txt
+expect2 'bad7.txt:2:.*does not exist' --script bad7.txt
 echo "viewer script ok"
