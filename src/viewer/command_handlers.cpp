@@ -39,8 +39,11 @@ void Viewer::on_Camera(const std::string& a) {
 void Viewer::on_Technique(const std::string& a) { set_technique(sides_[0], a); }
 void Viewer::on_TechniqueB(const std::string& a) { set_technique(sides_[1], a); }
 void Viewer::on_Set(const std::string& a) { apply_sets({a}); }
+// B alone: apply_assignments refuses a prefix that is not B's technique.
+void Viewer::on_SetB(const std::string& a) { apply_assignments(*sides_[1].technique, {a}); }
 
 void Viewer::on_Preset(const std::string& a) { use_named_preset(sides_[0], a); }
+void Viewer::on_PresetB(const std::string& a) { use_named_preset(sides_[1], a); }
 
 void Viewer::on_Swap(const std::string&) {
   std::swap(sides_[0], sides_[1]);

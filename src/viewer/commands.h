@@ -21,8 +21,10 @@
   X(Camera, "camera", Text, "NAME", "a named camera of the scene (or a bookmark)")                       \
   X(Technique, "technique", Technique, "NAME", "technique A")                                           \
   X(TechniqueB, "technique-b", Technique, "NAME", "technique B")                                        \
-  X(Set, "set", Assignment, "TECH.KEY=VALUE", "a parameter of A or B (the prefix says which)")          \
+  X(Set, "set", Assignment, "TECH.KEY=VALUE", "a parameter of A or B (the prefix says which; both when they are the same technique)") \
+  X(SetB, "set-b", Assignment, "TECH.KEY=VALUE", "a parameter of B alone (A and B the same technique at two settings)") \
   X(Preset, "preset", PresetName, "NAME", "technique A set up by a named preset of the CLI (listed by ssrlab techniques, e.g. thesis-hq)") \
+  X(PresetB, "preset-b", PresetName, "NAME", "technique B set up by a named preset") \
   X(Swap, "swap", None, "", "swap techniques A and B, with their parameters")                            \
   X(Compare, "compare", Compare, "off|split|diff|grid", "A alone, A | B, |A - B|, or the 2x2 grid (kCompareModes)") \
   X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \

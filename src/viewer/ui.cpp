@@ -182,7 +182,7 @@ void Viewer::draw_image_overlays() {
     bg->AddText(at, colour(1, 1, 1), text.c_str());
   };
   if (compare_ == CompareGrid) {
-    const std::string names[4] = {"A: " + sides_[0].technique->name(), "B: " + sides_[1].technique->name(),
+    const std::string names[4] = {"A: " + side_label(0), "B: " + side_label(1),
                                    "truth: " + sides_[2].technique->name(), "|A - truth|"};
     for (int c = 0; c < 4; ++c) label(ImVec2(cw * static_cast<float>(c % 2) + 8, ch * static_cast<float>(c / 2 + 1) - 22), names[c]);
     bg->AddLine(ImVec2(cw, 0), ImVec2(cw, 2 * ch), colour(1, 1, 1, 0.5f));
@@ -190,9 +190,9 @@ void Viewer::draw_image_overlays() {
   }
   if (compare_ == CompareSplit) {
     bg->AddLine(ImVec2(x, 0), ImVec2(x, h), dragging_divider_ ? colour(1, 0.86f, 0.31f) : colour(1, 1, 1, 0.8f), 2.0f);
-    const std::string left = "A: " + sides_[0].technique->name(), right = "B: " + sides_[1].technique->name();
-    bg->AddText(ImVec2(x - 8 - ImGui::CalcTextSize(left.c_str()).x, h - 22), colour(1, 1, 1, 0.9f), left.c_str());
-    bg->AddText(ImVec2(x + 8, h - 22), colour(1, 1, 1, 0.9f), right.c_str());
+    const std::string left = "A: " + side_label(0), right = "B: " + side_label(1);
+    label(ImVec2(x - 8 - ImGui::CalcTextSize(left.c_str()).x, h - 22), left);
+    label(ImVec2(x + 8, h - 22), right);
   }
   // A side that is not current says so on its part of the image.
   const int n = active_sides();
@@ -626,6 +626,16 @@ void Viewer::draw_progress(const std::string& what, double fraction) {
                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
   }
   window_->present();
+}
+
+std::string Viewer::side_label(int i) const {
+  Technique& t = *sides_[i].technique;
+  std::string label = t.name();
+  if (i > 1 || !sides_[1 - i].technique || sides_[1 - i].technique->name() != t.name()) return label;
+  ParamSet mine = t.params(), other = sides_[1 - i].technique->params();
+  for (std::size_t k = 0; k < mine.size(); ++k)
+    if (mine.to_string(k) != other.to_string(k)) label += " " + std::string(mine.table()[k].name) + "=" + mine.to_string(k);
+  return label;
 }
 
 // Debug views are offered for the techniques that produce them (their declarations).

@@ -127,6 +127,9 @@ class Viewer {
   void draw_magnifier();
   nlohmann::json inspect(int x, int y) const;  // inspector.h's values of image pixel (x, y)
   bool view_offered(int view) const;
+  // Side i's technique, and where A and B run the same one, the parameters in which it differs
+  // from the other side ("hiz max_iterations=8"): the split's and the grid's labels.
+  std::string side_label(int i) const;
 
   ViewerOptions o_;
   bool scripted_ = false;  // --frames or --script: on-demand work runs without being asked
