@@ -181,14 +181,15 @@ void Viewer::draw_image_overlays() {
     bg->AddRectFilled(ImVec2(at.x - 3, at.y - 2), ImVec2(at.x + size.x + 3, at.y + size.y + 2), colour(0, 0, 0, 0.7f), 2.0f);
     bg->AddText(at, colour(1, 1, 1), text.c_str());
   };
-  if (compare_ == CompareGrid) {
+  const bool one_image = view_ == kViewTraceable;  // the reference's mask: neither A nor B
+  if (compare_ == CompareGrid && !one_image) {
     const std::string names[4] = {"A: " + side_label(0), "B: " + side_label(1),
                                    "truth: " + sides_[2].technique->name(), "|A - truth|"};
     for (int c = 0; c < 4; ++c) label(ImVec2(cw * static_cast<float>(c % 2) + 8, ch * static_cast<float>(c / 2 + 1) - 22), names[c]);
     bg->AddLine(ImVec2(cw, 0), ImVec2(cw, 2 * ch), colour(1, 1, 1, 0.5f));
     bg->AddLine(ImVec2(0, ch), ImVec2(2 * cw, ch), colour(1, 1, 1, 0.5f));
   }
-  if (compare_ == CompareSplit) {
+  if (compare_ == CompareSplit && !one_image) {
     bg->AddLine(ImVec2(x, 0), ImVec2(x, h), dragging_divider_ ? colour(1, 0.86f, 0.31f) : colour(1, 1, 1, 0.8f), 2.0f);
     const std::string left = "A: " + side_label(0), right = "B: " + side_label(1);
     label(ImVec2(x - 8 - ImGui::CalcTextSize(left.c_str()).x, h - 22), left);
@@ -572,7 +573,8 @@ void Viewer::time_panel() {
   std::vector<std::string> names = {"free camera"};
   for (const CameraPath& p : anim.paths) names.push_back(p.name);
   int current = path_ + 1;
-  if (combo("path", &current, names)) ui_command(Verb::Path, current == 0 ? "free" : names[static_cast<std::size_t>(current)]);
+  // "camera path": the scene panel's "path" is the scene's option (the path it starts on).
+  if (combo("camera path", &current, names)) ui_command(Verb::Path, current == 0 ? "free" : names[static_cast<std::size_t>(current)]);
   if (path_ >= 0 && ImGui::IsItemHovered())
     ImGui::SetTooltip("%s", anim.paths[static_cast<std::size_t>(path_)].description.c_str());
   if (ImGui::Button(playing_ ? "pause" : "play")) ui_command(playing_ ? Verb::Pause : Verb::Play);
