@@ -73,6 +73,9 @@ void Viewer::on_View(const std::string& a) {
 }
 
 void Viewer::on_Exposure(const std::string& a) { set_frame_setting(renderer_->settings, "exposure", std::stod(a)); }
+void Viewer::on_ReflectiveF0(const std::string& a) {
+  set_frame_setting(renderer_->settings, "reflective_f0", std::stod(a));  // the table's range, one sentence
+}
 void Viewer::on_Ambient(const std::string& a) { set_lighting(lights_, environment_, std::stof(a)); }
 void Viewer::on_Frames(const std::string& a) { frames_left_ = std::stoi(a); }
 void Viewer::on_Screenshot(const std::string& a) { save(a); }

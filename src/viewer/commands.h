@@ -30,6 +30,7 @@
   X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \
   X(View, "view", View, "NAME", "a display view (final, reflection, ..., traceable)")                  \
   X(Exposure, "exposure", Number, "STOPS", "display exposure")                                          \
+  X(ReflectiveF0, "reflective-f0", Number, "F0", "pixels whose max F0 reaches this do reflection work (frame settings: [0.001, 1])") \
   X(Ambient, "ambient", NonNegative, "X", "the scene's ambient factor (the lighting panel's path)")     \
   X(Frames, "frames", Count, "N", "run N frames of the main loop")                                       \
   X(Screenshot, "screenshot", Png, "PATH.png", "the image of the last frame, without the UI")           \

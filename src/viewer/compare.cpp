@@ -46,10 +46,11 @@ FrameRequest Viewer::current_frame() const {
 std::string Viewer::frame_key() const {
   const Camera& c = camera_.camera();
   char buf[320];
-  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g|%dx%d|%g",
+  // reflective_f0 decides which pixels reflect: the truth and the figures follow it.
+  std::snprintf(buf, sizeof buf, "%llu|%d|%g %g %g|%g %g %g|%g|%d|%g %g|%dx%d|%g",
                 static_cast<unsigned long long>(renderer_->scene_id()), lighting_revision_, c.position.x,
                 c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fov_y_deg, view_,
-                renderer_->settings.exposure, render_w(), render_h(), time_);
+                renderer_->settings.exposure, renderer_->settings.reflective_f0, render_w(), render_h(), time_);
   return buf;
 }
 

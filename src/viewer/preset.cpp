@@ -147,6 +147,7 @@ std::string preset_to_json_text(const ViewerPreset& p) {
   j["diff_scale"] = json_float(p.diff_scale);
   j["view"] = p.view;
   j["exposure"] = json_float(p.exposure);
+  j["reflective_f0"] = json_float(p.reflective_f0);
   if (p.lights) {
     j["lights"] = ojson::array();
     for (const Light& l : *p.lights) j["lights"].push_back(scene_json::write_light(l));
@@ -170,7 +171,7 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   const json j = parse_json_object(text, where);
   const JsonReader r(where);
   r.keys(j, "", {"version", "scene", "camera", "technique_a", "technique_b", "compare", "split",
-                 "diff_scale", "view", "exposure", "lights", "environment", "ambient"});
+                 "diff_scale", "view", "exposure", "reflective_f0", "lights", "environment", "ambient"});
   if (!j.contains("version")) r.fail_at("version", "is required");
   if (!j["version"].is_number_integer() || j["version"].get<long long>() != kViewerPresetVersion)
     r.fail_at("version", "must be " + std::to_string(kViewerPresetVersion) +
@@ -194,11 +195,13 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0f, 1.0f);
   if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01f, 1.0f);
   if (j.contains("view")) p.view = r.one_of(j["view"], "view", viewer_view_names());
-  if (j.contains("exposure")) {  // the range of the frame settings' own table
+  for (const char* key : {"exposure", "reflective_f0"}) {  // the ranges of the frame settings' own table
+    if (!j.contains(key)) continue;
     FrameSettings s;
     const ParamSet frame = frame_settings_params(s);
-    const ParamDesc& e = frame.table()[static_cast<std::size_t>(frame.find("exposure"))];
-    p.exposure = r.number(j["exposure"], "exposure", static_cast<float>(e.min), static_cast<float>(e.max));
+    const ParamDesc& e = frame.table()[static_cast<std::size_t>(frame.find(key))];
+    (std::string(key) == "exposure" ? p.exposure : p.reflective_f0) =
+        r.number(j[key], key, static_cast<float>(e.min), static_cast<float>(e.max));
   }
   if (j.contains("lights")) {
     const json& l = j["lights"];

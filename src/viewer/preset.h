@@ -19,6 +19,8 @@
 //   "diff_scale": 0.25                    heat map full scale in [0.01, 1]
 //   "view": "final"                       a --view name, or "traceable" (viewer_view_names)
 //   "exposure": 0                         stops, in [-20, 20]
+//   "reflective_f0": 0.1                  pixels whose max F0 reaches this do reflection work
+//                                         (the frame settings' table: [0.001, 1])
 //   "lights": [...]                       replace the scene's lights (at most Scene::kMaxLights)
 //   "environment": {...}                  replaces the scene's environment
 //   "ambient": 0.3                        replaces the scene's ambient, >= 0
@@ -54,6 +56,7 @@ struct ViewerPreset {
   float split = 0.5f, diff_scale = 0.25f;
   std::string view = "final";
   float exposure = 0.0f;
+  float reflective_f0 = FrameSettings{}.reflective_f0;
   std::optional<std::vector<Light>> lights;
   std::optional<Environment> environment;
   std::optional<float> ambient;

@@ -166,6 +166,7 @@ ViewerPreset Viewer::capture_preset() const {
   p.diff_scale = std::clamp(diff_scale_, 0.01f, 1.0f);
   p.view = viewer_view_names()[static_cast<std::size_t>(view_)];
   p.exposure = renderer_->settings.exposure;  // kept in the table's range by every path that sets it
+  p.reflective_f0 = renderer_->settings.reflective_f0;
   p.lights = lights_;
   p.environment = environment_;
   p.ambient = ambient_;
@@ -194,6 +195,7 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   diff_scale_ = p.diff_scale;
   view_ = view;
   set_frame_setting(renderer_->settings, "exposure", p.exposure);
+  set_frame_setting(renderer_->settings, "reflective_f0", p.reflective_f0);
 }
 
 void Viewer::save(const std::string& path) {

@@ -76,6 +76,7 @@ void expect_same(const ViewerPreset& a, const ViewerPreset& b) {
   EXPECT_EQ(a.diff_scale, b.diff_scale);
   EXPECT_EQ(a.view, b.view);
   EXPECT_EQ(a.exposure, b.exposure);
+  EXPECT_EQ(a.reflective_f0, b.reflective_f0);
   ASSERT_EQ(a.lights.has_value(), b.lights.has_value());
   if (a.lights) {
     ASSERT_EQ(a.lights->size(), b.lights->size());
@@ -134,6 +135,7 @@ ViewerPreset full_preset() {
   p.diff_scale = 0.1f;
   p.view = "reflection";
   p.exposure = -1.7f;
+  p.reflective_f0 = 0.25f;
   Light point;
   point.position = {1, 2, 3};
   point.color = {1.0f, 0.5f, 0.25f};
@@ -301,6 +303,8 @@ TEST(ViewerPreset, BadPresetsAreOneSentenceInputErrors) {
       {"\"diff_scale\": 0", "'diff_scale'"},
       {"\"exposure\": 1e300", "'exposure'"},
       {"\"exposure\": -1e999", "number overflow"},
+      {"\"reflective_f0\": 0", "'reflective_f0'"},
+      {"\"reflective_f0\": 2", "'reflective_f0'"},
       {"\"view\": \"nope\"", "'view'"},
       {"\"lights\": {}", "'lights'"},
       {"\"lights\": [{\"type\": \"spot\"}]", "'lights[0].type'"},
