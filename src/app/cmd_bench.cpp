@@ -194,20 +194,29 @@ int run_bench(const BenchOptions& o) {
   if (!o.plot.empty()) {
     // Every plot write_plots() may write beside --plot, checked against the other outputs now:
     // not after the runs, with half the files written.
+    // Two scenes whose names give one file name (two files named alike, "a b" and "a_b") would
+    // overwrite each other's plots.
     std::vector<std::pair<std::string, std::string>> outputs = {{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}};
-    std::set<std::string> planned;
+    std::map<std::string, std::size_t> planned;  // plot path -> the scene it belongs to
+    std::size_t scene_index = 0;
     auto plan = [&](const std::string& what, const std::string& path) {
-      if (planned.insert(path).second) outputs.emplace_back("--plot's " + what + " plot", path);
+      const auto [it, added] = planned.emplace(path, scene_index);
+      if (added) outputs.emplace_back("--plot's " + what + " plot", path);
+      else if (it->second != scene_index)
+        throw InputError("scenes '" + scene_names[it->second] + "' and '" + scene_names[scene_index] +
+                         "' would write the same plot '" + path + "' (their names give one file name).");
     };
     const bool swept = std::any_of(variants.begin(), variants.end(), [](const Variant& v) { return !v.swept_keys.empty(); });
     for (std::size_t i = 0; i < scenes.size(); ++i)
       for (std::size_t j = 0; j < sizes.size(); ++j) {
+        scene_index = i;
         const std::string size = size_name(sizes[j].first, sizes[j].second);
         if (i + j > 0) plan("pareto", plot_path(o.plot, "pareto", scenes[i].name, size));
         if (swept) plan("sweep", plot_path(o.plot, "sweep", scenes[i].name, size));
       }
     if (sizes.size() > 1)
-      for (const Scene& scene : scenes) plan("resolution", plot_path(o.plot, "resolution", scene.name));
+      for (scene_index = 0; scene_index < scenes.size(); ++scene_index)
+        plan("resolution", plot_path(o.plot, "resolution", scenes[scene_index].name));
     require_output_files(outputs);
   }
 

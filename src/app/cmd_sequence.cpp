@@ -30,8 +30,17 @@ namespace {
 
 // Ctrl-C or a kill while frames or a video are written: the frame loop stops at the next frame
 // and unwinds, so the temporary frame directory and video are removed instead of left behind.
+// A second signal takes the default action (a hung GL call can still be stopped).
 volatile std::sig_atomic_t g_stop_signal = 0;
-extern "C" void stop_at_next_frame(int signal) { g_stop_signal = signal; }
+extern "C" void stop_at_next_frame(int signal) {
+  g_stop_signal = signal;
+  std::signal(signal, SIG_DFL);
+}
+void stop_if_signalled() {
+  if (g_stop_signal != 0)
+    throw RuntimeError("stopped by signal " + std::to_string(g_stop_signal) +
+                       "; the unfinished frames and video were removed.");
+}
 
 struct SequenceOptions {
   std::string scene = "gallery";
@@ -72,8 +81,12 @@ int run_sequence_command(const SequenceOptions& o) {
   if (!(o.fps > 0.0f) || o.fps > 1000.0f) throw InputError("--fps must be in (0, 1000].");
   if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot is written as an .svg.");
   require_output_files({{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}});
+  // "frames/" (as shells complete it) is the directory "frames": its temporary sibling must not
+  // land inside it.
+  fs::path out_dir = fs::path(o.out).lexically_normal();
+  if (!o.out.empty() && out_dir.filename().empty()) out_dir = out_dir.parent_path();
   if (!o.out.empty()) {
-    const fs::path dir(o.out), parent = fs::absolute(dir).parent_path();
+    const fs::path dir = out_dir, parent = fs::absolute(dir).parent_path();
     if (!fs::is_directory(parent)) throw InputError("--out: the directory '" + parent.string() + "' does not exist.");
     if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
       throw InputError("--out '" + o.out + "' must be a new or empty directory.");
@@ -92,6 +105,12 @@ int run_sequence_command(const SequenceOptions& o) {
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
+  // From here on temporaries exist until the end: a signal unwinds through their cleanup.
+  const bool images = !o.video.empty() || !o.out.empty();
+  if (images) {
+    std::signal(SIGINT, stop_at_next_frame);
+    std::signal(SIGTERM, stop_at_next_frame);
+  }
   // The video's frame size is the composition's; the writer checks ffmpeg and the path now.
   std::optional<VideoWriter> video;
   if (!o.video.empty()) {
@@ -101,7 +120,7 @@ int run_sequence_command(const SequenceOptions& o) {
     const RgbaImage8 first = compose(im, labels, w, h);
     video.emplace(o.video, first.width, first.height, static_cast<int>(std::lround(std::min(o.fps, 120.0f))));
   }
-  const fs::path frames_tmp = o.out.empty() ? fs::path() : fs::path(o.out + ".tmp" + std::to_string(::getpid()));
+  const fs::path frames_tmp = o.out.empty() ? fs::path() : fs::path(out_dir.string() + ".tmp" + std::to_string(::getpid()));
   if (!o.out.empty()) {
     fs::remove_all(frames_tmp);
     fs::create_directories(frames_tmp);
@@ -121,17 +140,10 @@ int run_sequence_command(const SequenceOptions& o) {
   Renderer renderer(scene, w, h);
   renderer.settings = settings;
   reference->load(renderer.shaders());
-  const bool images = video || !o.out.empty();
   std::function<void(const SequenceImages&)> on_frame;
-  if (images) {
-    std::signal(SIGINT, stop_at_next_frame);
-    std::signal(SIGTERM, stop_at_next_frame);
-  }
   if (images)
     on_frame = [&](const SequenceImages& im) {
-      if (g_stop_signal != 0)
-        throw RuntimeError("stopped by signal " + std::to_string(g_stop_signal) +
-                           "; the unfinished frames and video were removed.");
+      stop_if_signalled();
       const RgbaImage8 frame = compose(im, labels, w, h);
       if (video) video->add_frame(frame);
       if (!o.out.empty()) {
@@ -143,10 +155,11 @@ int run_sequence_command(const SequenceOptions& o) {
   const SequenceResults r = run_sequence(renderer, variants, *reference, spec, on_frame);
 
   const std::string clock = gi.software ? "cpu" : "gpu";
+  stop_if_signalled();  // a signal after the last frame: nothing is finished either
   if (video) video->finish();
   if (!o.out.empty()) {
-    if (fs::exists(o.out)) fs::remove(o.out);  // empty (checked above)
-    fs::rename(frames_tmp, o.out);
+    if (fs::exists(out_dir)) fs::remove(out_dir);  // empty (checked above)
+    fs::rename(frames_tmp, out_dir);
     cleanup.dir.clear();
   }
   if (!o.plot.empty()) write_text_file_atomic(o.plot, sequence_svg(r));

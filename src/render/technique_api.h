@@ -75,6 +75,9 @@ struct TechniqueDecl {
   bool planar_only = false;
   // Its shaders record per-ray telemetry when compiled with SSR_TELEMETRY (render/telemetry.h).
   bool telemetry = false;
+  // Its image changes from frame to frame on a still camera (new samples every frame, history
+  // that accumulates): the viewer's figures follow it frame by frame.
+  bool varies_per_frame = false;
 };
 
 // When a frame is: its index in a sequence, its time, and whether a camera cut precedes it.

@@ -296,13 +296,20 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
   }
   // A name its MTL files do not define is a typo, not a request for the default material
   // (without any mtllib, usemtl lines are only names: the default material, as documented).
+  // tinyobjloader reads one word after usemtl and knows the materials from the first mtllib on.
   if (!scan.mtllibs.empty() && material_override < 0) {
     std::set<std::string> defined;
     for (const MtlMaterial& m : mtl) defined.insert(m.name);
-    for (const auto& [name, line] : scan.usemtls)
-      if (!defined.count(name))
-        fail("OBJ file " + q(path) + " line " + std::to_string(line) + ": material " + q(name) +
-             " is not defined in its MTL files");
+    const std::size_t first_mtllib = scan.mtllibs.front().second;
+    for (const auto& [name, line] : scan.usemtls) {
+      const std::string where = "OBJ file " + q(path) + " line " + std::to_string(line) + ": ";
+      if (line < first_mtllib) fail(where + "'usemtl " + name + "' comes before the first 'mtllib'");
+      if (defined.count(name)) continue;
+      for (const std::string& d : defined)  // "newmtl Material 1" defines one name with a space
+        if (d.size() > name.size() && d.compare(0, name.size(), name) == 0 && is_space(d[name.size()]))
+          fail(where + "material " + q(d) + " has a space in its name, which usemtl cannot name");
+      fail(where + "material " + q(name) + " is not defined in its MTL files");
+    }
   }
 
   tinyobj::attrib_t attrib;

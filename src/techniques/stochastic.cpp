@@ -86,6 +86,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
     d.debug_views.insert(d.debug_views.end(), {ViewMode::Iterations, ViewMode::IdleLanes});
     d.telemetry = true;
+    d.varies_per_frame = true;  // blue noise turns every frame; the history accumulates
     return d;
   }
 

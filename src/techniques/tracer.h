@@ -117,6 +117,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
       // Its second image holds the rays then: the stage views replace the step views.
       d.reads |= kReadMotion | kReadPrevDepth | kReadPrevNormal;
       d.textures = Denoiser::textures(1);
+      d.varies_per_frame = true;  // new samples every frame, accumulated
       d.stage_views = denoiser_.stage_views(0, this->params_.ray.denoise);
       d.debug_views.clear();
       for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);

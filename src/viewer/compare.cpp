@@ -24,15 +24,13 @@ namespace ssr {
 namespace {
 
 // What a technique's image depends on besides the frame inputs: its name and parameter values,
-// and for a technique with history (persistent textures: it accumulates, its samples change
-// every frame) the frame itself, so that the PSNR follows its image as it settles.
+// and for a technique whose image changes every frame (TechniqueDecl::varies_per_frame: new
+// samples, accumulating history) the frame itself, so that the PSNR follows it as it settles.
 std::string technique_key(Technique& t, int frame_index) {
   std::string k = t.name();
   ParamSet p = t.params();
   for (std::size_t i = 0; i < p.size(); ++i) k += "," + p.to_string(i);
-  const TechniqueDecl decl = t.declare();
-  if (std::any_of(decl.textures.begin(), decl.textures.end(), [](const TextureDecl& d) { return d.persistent; }))
-    k += "|frame " + std::to_string(frame_index);
+  if (t.declare().varies_per_frame) k += "|frame " + std::to_string(frame_index);
   return k;
 }
 

@@ -84,6 +84,11 @@ bad --scene gallery --frames 2 --out "$tmp"
 bad --scene gallery --frames 2 --techniques nothing
 bad --scene gallery --frames 2 --techniques ""
 bad --scene gallery --frames 2 --out "$tmp/bad/r.json"  # the --json file of bad()
+bad --scene gallery --frames 2 --out "$tmp/bad/r.json/"
+# "frames/" (a shell's completion) is the directory frames: its temporary lands beside it.
+mkdir "$tmp/slash"
+seq --scene gallery --path still --frames 2 --techniques none --json "$tmp/slash.json" --out "$tmp/slash/" > /dev/null
+[ "$(ls "$tmp/slash")" = "$(printf 'frame_00000.png\nframe_00001.png')" ] || { echo "--out DIR/ holds:"; ls -a "$tmp/slash"; exit 1; }
 NO_FFMPEG=1 bad --scene gallery --frames 2 --video "$tmp/bad/v.mp4"
 
 # A signal while frames and a video are written: they are removed, not left as temporaries.

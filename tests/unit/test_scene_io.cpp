@@ -214,6 +214,18 @@ TEST(ObjLoad, ByteOrderMarksAndUndefinedMaterials) {
                                                          "usemtl rde\nf 1 2 3\n"));
                  }),
                  {"typo.obj", "line 5", "'rde'", "not defined"});
+  // Before the first mtllib tinyobjloader knows no material; a name with a space is two words.
+  expect_message(input_error([&] {
+                   ssr::load_scene_obj(write("early.obj", "usemtl red\nmtllib bom.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                          "f 1 2 3\n"));
+                 }),
+                 {"early.obj", "line 1", "before the first 'mtllib'"});
+  write("spaced.mtl", "newmtl Material 1\nKd 1 0 0\n");
+  expect_message(input_error([&] {
+                   ssr::load_scene_obj(write("spaced.obj", "mtllib spaced.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                                           "usemtl Material 1\nf 1 2 3\n"));
+                 }),
+                 {"spaced.obj", "line 5", "'Material 1'", "space"});
   // Without any mtllib a usemtl line only names the part: the default material.
   const Scene bare = ssr::load_scene_obj(write("bare.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n"));
   EXPECT_NE(find_material(bare, "default"), nullptr);
