@@ -112,7 +112,8 @@ void main() {
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
         float k = (i == 0 ? 1.0 - b.x : b.x) * (j == 0 ? 1.0 - b.y : b.y);
-        if (k > 0.0) add_ray(a, g, v, (t0 + ivec2(i, j)) * 2 + pass.trace.yz, k, glossy, firefly);
+        ivec2 t = t0 + ivec2(i, j);  // -1 at the top and left edges: no texel (no negative division)
+        if (k > 0.0 && all(greaterThanEqual(t, ivec2(0)))) add_ray(a, g, v, t * 2 + pass.trace.yz, k, glossy, firefly);
       }
   } else {
     add_ray(a, g, v, p, 1.0, glossy, firefly);
