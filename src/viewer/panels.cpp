@@ -307,6 +307,7 @@ void draw_pixel_values(const nlohmann::json& values) {
       std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
       return std::string(buf);
     }
+    if (v.is_null()) return std::string("-");  // not known (no reference computed: the class)
     if (!v.is_array()) return v.dump();
     std::string s;
     for (const auto& e : v) {

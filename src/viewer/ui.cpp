@@ -222,6 +222,13 @@ void Viewer::draw_image_overlays() {
     bg->PopClipRect();
   }
   if (magnifier_ > 0 && hovered_ && composed_) draw_magnifier();
+  // The pinned pixel (I): a ring around it, so the values in the panel have a place.
+  if (pinned_) {
+    const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+    const ImVec2 c((static_cast<float>(pinned_->x) + 0.5f) / sx, (static_cast<float>(pinned_->y) + 0.5f) / sy);
+    bg->AddCircle(c, 7.0f, colour(0, 0, 0, 0.8f), 16, 3.0f);
+    bg->AddCircle(c, 7.0f, colour(1, 0.86f, 0.31f), 16, 1.5f);
+  }
   bg->PopClipRect();
 }
 
