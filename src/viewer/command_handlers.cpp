@@ -143,7 +143,7 @@ void Viewer::on_Inspect(const std::string& a) {
     frame(0.0);
   }
   const auto space = a.find(' ');
-  const nlohmann::json j = inspect(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
+  const PixelValues j = inspect(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
   std::printf("ssrlab-view: inspect %s\n", j.dump().c_str());
   std::fflush(stdout);
 }

@@ -82,7 +82,7 @@ bool Viewer::figure_shown() const {
   return compare_ != CompareOff && view_ == VIEW_FINAL && psnr_valid_ && side_current(0) && side_current(1);
 }
 
-nlohmann::json Viewer::inspect(int x, int y) const {
+PixelValues Viewer::inspect(int x, int y) const {
   if (x < 0 || y < 0 || x >= image_w_ || y >= image_h_ || !composed_)
     throw InputError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                      std::to_string(image_w_) + "x" + std::to_string(image_h_) + " image.");
@@ -106,7 +106,7 @@ nlohmann::json Viewer::inspect(int x, int y) const {
     }
   }
   if (!classes && mask_ref_ && mask_key_ == frame_key()) classes = reference_outputs(*mask_ref_).classes;
-  nlohmann::json j = inspect_pixel(*renderer_, x, y, images, n, classes, truth);
+  PixelValues j = inspect_pixel(*renderer_, x, y, images, n, classes, truth);
   for (int i = 0; i < n; ++i) j[side_key(i)]["current"] = side_current(i);
   return j;
 }

@@ -12,9 +12,9 @@ namespace ssr {
 
 namespace {
 
-nlohmann::json vec(const float* v, int n) {
-  nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < n; ++i) a.push_back(std::isfinite(v[i]) ? nlohmann::json(v[i]) : nlohmann::json(nullptr));
+PixelValues vec(const float* v, int n) {
+  PixelValues a = PixelValues::array();
+  for (int i = 0; i < n; ++i) a.push_back(std::isfinite(v[i]) ? PixelValues(v[i]) : PixelValues(nullptr));
   return a;
 }
 
@@ -32,10 +32,10 @@ const char* pixel_class_name(PixelClass c) {
   return "?";
 }
 
-nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,
+PixelValues inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,
                              const std::vector<PixelClass>* classes, std::optional<int> truth) {
   const GBuffer& g = r.gbuffer();
-  nlohmann::json j;
+  PixelValues j;
   j["pixel"] = {x, y};
   const float depth = gl::read_texel<float, 1>(g.depth, x, y, GL_DEPTH_COMPONENT, GL_FLOAT)[0];
   j["depth"] = depth;
@@ -43,7 +43,7 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   const float w = static_cast<float>(g.depth.width()), h = static_cast<float>(g.depth.height());
   const glm::vec4 ndc((x + 0.5f) / w * 2.0f - 1.0f, 1.0f - (y + 0.5f) / h * 2.0f, depth, 1.0f);
   const glm::vec4 view = glm::inverse(r.matrices().proj) * ndc;
-  j["view_depth"] = depth > 0.0f ? nlohmann::json(-view.z / view.w) : nlohmann::json(nullptr);  // 0: the sky
+  j["view_depth"] = depth > 0.0f ? PixelValues(-view.z / view.w) : PixelValues(nullptr);  // 0: the sky
   const auto nr = gl::read_texel<float, 4>(g.normal_roughness, x, y, GL_RGBA, GL_FLOAT);
   j["normal"] = vec(nr.data(), 3);
   j["roughness"] = nr[3];
@@ -61,12 +61,12 @@ nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* 
   j["motion"] = vec(mv.data(), 2);  // pixels to last frame's position
   j["reflective"] = depth > 0.0f && (m[2] & MATERIAL_FLAG_REFLECTIVE) != 0u;
   const std::size_t at = static_cast<std::size_t>(y) * g.depth.width() + x;
-  j["class"] = classes && at < classes->size() ? nlohmann::json(pixel_class_name((*classes)[at])) : nlohmann::json(nullptr);
+  j["class"] = classes && at < classes->size() ? PixelValues(pixel_class_name((*classes)[at])) : PixelValues(nullptr);
   j["exposure"] = r.settings.exposure;
   std::array<std::array<std::uint8_t, 4>, 3> shown{};
   for (int i = 0; i < n_sides; ++i) {
     const SideImages& s = sides[i];
-    nlohmann::json k;
+    PixelValues k;
     k["technique"] = s.technique;
     const auto c = gl::read_texel<float, 4>(*s.color, x, y, GL_RGBA, GL_FLOAT);
     k["colour"] = vec(c.data(), 3);

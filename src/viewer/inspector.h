@@ -29,8 +29,10 @@ struct SideImages {
 // exposure, and per side
 // (side_key: "a", "b", "truth"): technique, colour (linear), display (0..255 of the shown view), steps, hits,
 // hit_distance, offset (ppr), error (mean |side - truth| of display values, 0..1).
-nlohmann::json inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,
-                             const std::vector<PixelClass>* classes, std::optional<int> truth);
+// In that order (ordered_json): the panel lists them as a reader takes them in, not sorted.
+using PixelValues = nlohmann::ordered_json;
+PixelValues inspect_pixel(const Renderer& r, int x, int y, const SideImages* sides, int n_sides,
+                          const std::vector<PixelClass>* classes, std::optional<int> truth);
 
 const char* pixel_class_name(PixelClass c);
 // The JSON key of side i: "a", "b", "truth" (the grid's third).

@@ -300,8 +300,8 @@ void draw_class_legend() {
   ImGui::NewLine();
 }
 
-void draw_pixel_values(const nlohmann::json& values) {
-  auto text = [](const nlohmann::json& v) {
+void draw_pixel_values(const nlohmann::ordered_json& values) {
+  auto text = [](const nlohmann::ordered_json& v) {
     char buf[32];
     if (v.is_number_float()) {
       std::snprintf(buf, sizeof buf, "%.4g", v.get<double>());
@@ -317,7 +317,7 @@ void draw_pixel_values(const nlohmann::json& values) {
     }
     return s;
   };
-  auto line = [&](const std::string& k, const nlohmann::json& v) {
+  auto line = [&](const std::string& k, const nlohmann::ordered_json& v) {
     ImGui::TextDisabled("%s", k.c_str());
     ImGui::SameLine(110);
     ImGui::TextUnformatted(text(v).c_str());
@@ -326,7 +326,7 @@ void draw_pixel_values(const nlohmann::json& values) {
     if (!v.is_object() && k != "pixel") line(k, v);
   for (const char* side : {"a", "b", "truth"}) {
     if (!values.contains(side)) continue;
-    const nlohmann::json& s = values[side];
+    const nlohmann::ordered_json& s = values[side];
     ImGui::Separator();
     ImGui::Text("%s: %s%s", side, s.value("technique", "?").c_str(), s.value("current", true) ? "" : " (stale)");
     for (const auto& [k, v] : s.items())

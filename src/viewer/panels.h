@@ -69,6 +69,6 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
 void text_disabled_wrapped(const char* text);
 
 // The pixel inspector's values (viewer/inspector.h's JSON): one line a value, then per side.
-void draw_pixel_values(const nlohmann::json& values);
+void draw_pixel_values(const nlohmann::ordered_json& values);
 
 }  // namespace ssr

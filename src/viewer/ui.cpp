@@ -268,7 +268,7 @@ void Viewer::inspector_panel() {
     ImGui::TextDisabled("hover the image (I pins a pixel)");
     return;
   }
-  nlohmann::json j;
+  PixelValues j;
   try {
     j = inspect(p->x, p->y);
   } catch (const std::exception& e) {

@@ -125,7 +125,7 @@ class Viewer {
   void draw_progress(const std::string& what, double fraction);
   void inspector_panel();
   void draw_magnifier();
-  nlohmann::json inspect(int x, int y) const;  // inspector.h's values of image pixel (x, y)
+  PixelValues inspect(int x, int y) const;  // inspector.h's values of image pixel (x, y)
   bool view_offered(int view) const;
   // Side i's technique, and where A and B run the same one, the parameters in which it differs
   // from the other side ("hiz max_iterations=8"): the split's and the grid's labels.

@@ -82,8 +82,8 @@ TEST(Legends, DifferenceAndClassLegends) {
 
 TEST(Legends, PixelValuesOneLineEach) {
   ImGuiHarness ui;
-  const nlohmann::json one = {{"pixel", {1, 2}}, {"depth", 0.5}, {"object", 3}};
-  nlohmann::json two = one;
+  const nlohmann::ordered_json one = {{"pixel", {1, 2}}, {"depth", 0.5}, {"object", 3}};
+  nlohmann::ordered_json two = one;
   two["normal"] = {0.0, 1.0, 0.0};
   two["a"] = {{"technique", "hiz"}, {"current", true}, {"steps", 12.0}, {"display", {1, 2, 3}}};
   two["b"] = {{"technique", "reference"}, {"current", false}, {"error", 0.0}};
