@@ -40,13 +40,28 @@ def fmt(v, digits=2):
     return f"{v:.{digits}f}"
 
 
+def load(path, need_regions=False):
+    """A bench JSON's runs; one clear sentence (not a traceback) for any other file."""
+    try:
+        doc = json.load(open(path))
+    except (OSError, ValueError) as e:
+        sys.exit(f"bench_table.py: {path}: {e}")
+    if not isinstance(doc, dict) or "runs" not in doc:
+        sys.exit(f"bench_table.py: {path} is not a bench JSON (no 'runs'; compare's JSON is one run, not a list)")
+    if need_regions and any("regions" not in r for run in doc["runs"] for r in run["results"]):
+        sys.exit(f"bench_table.py: {path} has results without 'regions' (a bench JSON from before the "
+                 "per-region verdicts): this table needs them")
+    return doc["runs"]
+
+
 def main(paths):
     for path in paths:
+        runs = load(path)
         doc = json.load(open(path))
         dev = doc["device"]
         print(f"Device: {dev['renderer']}, {dev['version']}, clock `{dev['clock']}`, "
               f"revision `{doc['revision']}`\n")
-        for run in doc["runs"]:
+        for run in runs:
             w, h = run["size"]
             print(f"**{run['scene']} {w}x{h}** (inherent screen-space PSNR "
                   f"{fmt(run['inherent_psnr'])} dB)\n")
@@ -91,7 +106,7 @@ def region_cell(r, name):
 def regions(paths, only_defaults=False):
     """Per run: technique x region, 'PSNR vs ideal / correct coverage / false hits (noise floor)'."""
     for path in paths:
-        for run in json.load(open(path))["runs"]:
+        for run in load(path, need_regions=True):
             present = [n for n in REGION_COLUMNS
                        if any(r.get("regions", {}).get(n, {}).get("pixels", 0) for r in run["results"])]
             w, h = run["size"]
@@ -114,7 +129,7 @@ def summary(paths):
     """One row per (scene, size), one column per technique: median ms, traceable PSNR against the
     ideal over what the technique handles, correct coverage."""
     for path in paths:
-        runs = json.load(open(path))["runs"]
+        runs = load(path, need_regions=True)
         names = []
         for run in runs:
             for r in run["results"]:
@@ -142,7 +157,7 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
           f"{baseline} |")
     print("|---|---|---:|---|---|---:|---:|")
     for path in paths:
-        for run in json.load(open(path))["runs"]:
+        for run in load(path):
             base = [r for r in run["results"] if r["technique"] == baseline and not r.get("preset")]
             if not base:
                 continue

@@ -183,6 +183,8 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     SequenceSummary s;
     s.technique = variants[v].technique;
     s.label = variants[v].label();
+    s.preset = variants[v].preset;
+    s.params = param_list(*run.technique);
     const auto stats = [](std::vector<float>& v, SequenceSummary::RegionInstability& out) {
       out.pixels = v.size();
       if (v.empty()) return;
@@ -242,8 +244,12 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
     nlohmann::json regions = nlohmann::json::object();
     for (const auto& ri : s.instability_regions)
       regions[ri.region] = {{"mean", optional_json(ri.mean)}, {"p95", optional_json(ri.p95)}, {"pixels", ri.pixels}};
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& [key, value] : s.params) params[key] = param_value_json(value);
     summary.push_back({{"technique", s.technique},
                        {"label", s.label},
+                       {"preset", s.preset},
+                       {"params", std::move(params)},
                        {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
                                        {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
                                        {"change_ratio", optional_json(s.change_ratio)}}},

@@ -30,6 +30,8 @@ for f in a["frames"]:
         assert math.isfinite(r["error"]["psnr"]) and "all" in r["regions"]
 for s in a["summary"]:
     assert {"technique", "label", "instability", "ghosting", "convergence"} <= s.keys()
+    # Every parameter's value, defaults and "auto" included (a result names its parameters).
+    assert s["params"] and all(k.startswith(s["technique"] + ".") for k in s["params"]), s["params"]
     assert set(s["instability"]) >= {"mean", "p95", "change_mean", "truth_change_mean", "change_ratio"}
     assert set(s["ghosting"]) >= {"disoccluded_psnr", "elsewhere_psnr"}
     assert s["instability"]["change_mean"] >= 0 and s["instability"]["truth_change_mean"] >= 0
