@@ -124,27 +124,24 @@ int run_render(const RenderOptions& o) {
   technique->load(telemetry_view ? renderer.shaders().with_defines({"SSR_TELEMETRY"}) : renderer.shaders());
   if (telemetry_view) renderer.telemetry().begin(w, h);
 
-  if (diff_view) {
+  if (scored_view) {
     reference->load(renderer.shaders());
     ScoredFrame frame(renderer, camera, *reference);
     const ScoredFrame::Score s = frame.score(*technique);
-    write_png(o.out, heat_map(s.display, frame.truth(), frame.classes()));
-    std::printf("wrote %s (%dx%d, scene %s, technique %s, view difference, 0.25 = hottest): PSNR %.2f dB, "
-                "traceable %.2f dB\n",
-                o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), s.error.psnr,
-                s.error.psnr_traceable);
-    return s.error.nonfinite ? 1 : 0;
-  }
-  if (hits_view) {
-    reference->load(renderer.shaders());
-    ScoredFrame frame(renderer, camera, *reference);
-    const ScoredFrame::Score s = frame.score(*technique);
-    write_png(o.out, hit_class_map(frame.hit_classes_of(s, *technique), frame.truth()));
-    const RegionFigures* all = s.breakdown.find("all");
-    std::printf("wrote %s (%dx%d, scene %s, technique %s, view hit-classes): %zu correct, %zu false, "
-                "%zu missed, %zu correct misses\n",
-                o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), all->hits.correct,
-                all->hits.false_hits, all->hits.missed, all->hits.correct_miss);
+    if (diff_view) {
+      write_png(o.out, heat_map(s.display, frame.truth(), frame.classes()));
+      std::printf("wrote %s (%dx%d, scene %s, technique %s, view difference, 0.25 = hottest): PSNR %.2f dB, "
+                  "traceable %.2f dB\n",
+                  o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), s.error.psnr,
+                  s.error.psnr_traceable);
+    } else {
+      write_png(o.out, hit_class_map(frame.hit_classes_of(s, *technique), frame.truth()));
+      const RegionFigures* all = s.breakdown.find("all");
+      std::printf("wrote %s (%dx%d, scene %s, technique %s, view hit-classes): %zu correct, %zu false, "
+                  "%zu missed, %zu correct misses\n",
+                  o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), all->hits.correct,
+                  all->hits.false_hits, all->hits.missed, all->hits.correct_miss);
+    }
     return s.error.nonfinite ? 1 : 0;
   }
 
