@@ -163,8 +163,7 @@ void Viewer::on_Status(const std::string&) {
   j["image"] = {image_w_, image_h_};
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
-  const bool truth_figure = figure_shown() && compare_ == CompareGrid && psnr_truth_valid_ && side_current(2);
-  j["psnr_truth"] = truth_figure ? nlohmann::json(psnr_truth_) : nlohmann::json(nullptr);
+  j["psnr_truth"] = truth_figure_shown() ? nlohmann::json(psnr_truth_) : nlohmann::json(nullptr);
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);
 }

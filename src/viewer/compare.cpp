@@ -82,6 +82,10 @@ bool Viewer::figure_shown() const {
   return compare_ != CompareOff && view_ == VIEW_FINAL && psnr_valid_ && side_current(0) && side_current(1);
 }
 
+bool Viewer::truth_figure_shown() const {
+  return figure_shown() && compare_ == CompareGrid && psnr_truth_valid_ && side_current(2);
+}
+
 PixelValues Viewer::inspect(int x, int y) const {
   if (x < 0 || y < 0 || x >= image_w_ || y >= image_h_ || !composed_)
     throw InputError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +

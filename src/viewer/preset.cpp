@@ -195,14 +195,15 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0f, 1.0f);
   if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01f, 1.0f);
   if (j.contains("view")) p.view = r.one_of(j["view"], "view", viewer_view_names());
-  for (const char* key : {"exposure", "reflective_f0"}) {  // the ranges of the frame settings' own table
-    if (!j.contains(key)) continue;
-    FrameSettings s;
-    const ParamSet frame = frame_settings_params(s);
+  FrameSettings settings;
+  const ParamSet frame = frame_settings_params(settings);
+  auto frame_setting = [&](const char* key, float& out) {  // in the range of the frame settings' own table
+    if (!j.contains(key)) return;
     const ParamDesc& e = frame.table()[static_cast<std::size_t>(frame.find(key))];
-    (std::string(key) == "exposure" ? p.exposure : p.reflective_f0) =
-        r.number(j[key], key, static_cast<float>(e.min), static_cast<float>(e.max));
-  }
+    out = r.number(j[key], key, static_cast<float>(e.min), static_cast<float>(e.max));
+  };
+  frame_setting("exposure", p.exposure);
+  frame_setting("reflective_f0", p.reflective_f0);
   if (j.contains("lights")) {
     const json& l = j["lights"];
     if (!l.is_array()) r.fail_at("lights", "must be an array");

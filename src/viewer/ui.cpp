@@ -349,7 +349,7 @@ void Viewer::side_panel(double dt) {
       else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("final image, reflective pixels, display values: compare's 'PSNR' when B is the reference");
-      if (compare_ == CompareGrid && psnr_truth_valid_ && side_current(2)) {  // the grid's fourth cell
+      if (truth_figure_shown()) {  // the grid's fourth cell
         if (psnr_truth_ >= kPsnrCap) ImGui::Text("PSNR A vs truth: identical");
         else ImGui::Text("PSNR A vs truth: %.2f dB", psnr_truth_);
       }
