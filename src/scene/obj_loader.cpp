@@ -302,9 +302,9 @@ int append_obj_impl(Scene& scene, LoadContext& ctx, const fs::path& path, const 
     for (const MtlMaterial& m : mtl) defined.insert(m.name);
     const std::size_t first_mtllib = scan.mtllibs.front().second;
     for (const auto& [name, line] : scan.usemtls) {
+      if (line >= first_mtllib && defined.count(name)) continue;
       const std::string where = "OBJ file " + q(path) + " line " + std::to_string(line) + ": ";
       if (line < first_mtllib) fail(where + "'usemtl " + name + "' comes before the first 'mtllib'");
-      if (defined.count(name)) continue;
       for (const std::string& d : defined)  // "newmtl Material 1" defines one name with a space
         if (d.size() > name.size() && d.compare(0, name.size(), name) == 0 && is_space(d[name.size()]))
           fail(where + "material " + q(d) + " has a space in its name, which usemtl cannot name");

@@ -100,9 +100,8 @@ class PprTechnique final : public TechniqueWithParams<P> {
     // Each reflector knows where its run of coplanar neighbours ends (the projection tests a
     // plane once and asks the destination pixel which of them it shows).
     for (std::size_t i = refl.size(); i-- > 0;)
-      refl[i].center.w = static_cast<float>(i + 1 < refl.size() && refl[i + 1].plane == refl[i].plane
-                                                ? refl[i + 1].center.w
-                                                : static_cast<float>(i + 1));
+      refl[i].center.w = i + 1 < refl.size() && refl[i + 1].plane == refl[i].plane ? refl[i + 1].center.w
+                                                                                  : static_cast<float>(i + 1);
     static_assert(Scene::kMaxReflectors <= PPR_MAX_REFLECTORS, "ppr_project.comp's shared copy holds them all");
     params_.reflector_count = static_cast<int>(refl.size());
     if (refl.empty()) refl.push_back({});  // a buffer must have storage
