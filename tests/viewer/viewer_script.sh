@@ -115,14 +115,12 @@ expect2() {  # expect2 PATTERN ARGS...
   [ "$(wc -l < err1.txt)" -eq 1 ] || { echo "expected one line on stderr for: $*"; cat err.txt; exit 1; }
   grep -q "$pattern" err1.txt || { echo "stderr lacks '$pattern' for: $*"; cat err.txt; exit 1; }
 }
-printf 'frames 1\njump 3\n' > bad1.txt
-expect2 'bad1.txt:2: unknown command' --script bad1.txt
-printf 'frames 1\nsplit 2\n' > bad2.txt
-expect2 'bad2.txt:2:' --script bad2.txt
-printf 'frames 1\npreset-load missing.json\n' > bad3.txt
-expect2 'bad3.txt:2:.*missing.json' --script bad3.txt
-printf 'frames 1\nscene nosuch-scene\n' > bad4.txt
-expect2 'bad4.txt:2:.*nosuch-scene' --script bad4.txt
+# bad_script NAME LINES PATTERN: a script of LINES (printf's escapes) fails as expect2 wants.
+bad_script() { printf "$2" > "$1"; expect2 "$3" --script "$1"; }
+bad_script bad1.txt 'frames 1\njump 3\n' 'bad1.txt:2: unknown command'
+bad_script bad2.txt 'frames 1\nsplit 2\n' 'bad2.txt:2:'
+bad_script bad3.txt 'frames 1\npreset-load missing.json\n' 'bad3.txt:2:.*missing.json'
+bad_script bad4.txt 'frames 1\nscene nosuch-scene\n' 'bad4.txt:2:.*nosuch-scene'
 echo '{"version": 1, "technique_a": {"name": "nosuch"}}' > bad.json
 expect2 'nosuch' --preset bad.json --frames 1
 echo '{ not json' > broken.json
@@ -133,10 +131,7 @@ expect2 'viewport limit\|window system' --size 100000x100 --frames 1
 # Found by a review: a debug view the shown technique does not fill (it stayed on the final
 # image without a word), a size the window system would clamp (it reported another width), a
 # screenshot into a missing directory (exit 1, no line).
-printf 'technique stochastic\nframes 1\nview steps\n' > bad5.txt
-expect2 'bad5.txt:3:.*not filled by stochastic' --script bad5.txt
-printf 'frames 1\nresize 100000x10\n' > bad6.txt
-expect2 'bad6.txt:2:.*100000x10 is not supported' --script bad6.txt
-printf 'frames 1\nscreenshot nowhere/x.png\n' > bad7.txt
-expect2 'bad7.txt:2:.*does not exist' --script bad7.txt
+bad_script bad5.txt 'technique stochastic\nframes 1\nview steps\n' 'bad5.txt:3:.*not filled by stochastic'
+bad_script bad6.txt 'frames 1\nresize 100000x10\n' 'bad6.txt:2:.*100000x10 is not supported'
+bad_script bad7.txt 'frames 1\nscreenshot nowhere/x.png\n' 'bad7.txt:2:.*does not exist'
 echo "viewer script ok"
