@@ -7,8 +7,8 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -80,7 +80,29 @@ std::string plot_path(const std::string& plot, const std::string& kind, const st
   return (base.parent_path() / base.stem()).string() + "-" + kind + "-" + slug + (size.empty() ? "" : "-" + size) + ".svg";
 }
 
-void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
+// Which plots bench writes beside --plot, and where: one error-vs-time plot per run (the first
+// run's is the --plot file itself), a time-vs-parameter plot per run when a variant sweeps, and a
+// time-vs-resolution plot per scene when several sizes run. Planned before the runs (every path
+// checked) and followed after them.
+enum class PlotKind { Pareto, Sweep, Resolution };
+struct PlotPlan {
+  std::string plot;  // --plot
+  bool swept = false;
+  bool several_sizes = false;
+
+  // No value: this plot is not written. `size` and `first_run` matter to the per-run plots only.
+  std::optional<std::string> path(PlotKind kind, const std::string& scene, const std::string& size = "",
+                                  bool first_run = false) const {
+    switch (kind) {
+      case PlotKind::Pareto: return first_run ? plot : plot_path(plot, "pareto", scene, size);
+      case PlotKind::Sweep: return swept ? std::optional(plot_path(plot, "sweep", scene, size)) : std::nullopt;
+      case PlotKind::Resolution: return several_sizes ? std::optional(plot_path(plot, "resolution", scene)) : std::nullopt;
+    }
+    return std::nullopt;
+  }
+};
+
+void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
                  const std::vector<Variant>& variants, const std::string& clock) {
   std::vector<std::string> written;
   auto write = [&](const std::string& path, const PlotSpec& spec) {
@@ -125,8 +147,10 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
     }
     pareto.series = fronts;
     const std::string size = size_name(run.width, run.height);
-    write(r == 0 ? o.plot : plot_path(o.plot, "pareto", run.scene, size), pareto);  // the first run: the --plot file
+    write(*plan.path(PlotKind::Pareto, run.scene, size, r == 0), pareto);
     // Time vs the swept parameter, per technique with a sweep.
+    const std::optional<std::string> sweep_path = plan.path(PlotKind::Sweep, run.scene, size);
+    if (!sweep_path) continue;
     PlotSpec sweep{"Time vs swept parameter, " + where, "parameter value", "time (ms, " + clock + ")", false, false, {}};
     for (std::size_t i = 0; i < run.results.size(); ++i) {
       if (variants[i].swept_keys.empty()) continue;
@@ -137,7 +161,7 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
       for (const auto& [k, v] : t.params)
         if (k == name) it->points.push_back({std::stod(v), t.time_ms.median});
     }
-    if (!sweep.series.empty()) write(plot_path(o.plot, "sweep", run.scene, size), sweep);
+    write(*sweep_path, sweep);
   }
   // Time vs resolution: per scene, per technique (first variant of each), when several sizes ran.
   std::map<std::string, PlotSpec> by_scene;
@@ -159,9 +183,10 @@ void write_plots(const BenchOptions& o, const std::vector<RunResults>& runs,
     }
   }
   for (auto& [scene, spec] : by_scene) {
-    bool several = false;
+    const std::optional<std::string> path = plan.path(PlotKind::Resolution, scene);
+    bool several = false;  // not when every size but one was skipped
     for (const PlotSeries& s : spec.series) several |= s.points.size() > 1;
-    if (several) write(plot_path(o.plot, "resolution", scene), spec);
+    if (path && several) write(*path, spec);
   }
   for (const std::string& p : written) std::printf("plot: %s\n", p.c_str());
 }
@@ -191,6 +216,9 @@ int run_bench(const BenchOptions& o) {
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
+  const PlotPlan plot_plan{o.plot,
+                           std::any_of(variants.begin(), variants.end(), [](const Variant& v) { return !v.swept_keys.empty(); }),
+                           sizes.size() > 1};
   if (!o.plot.empty()) {
     // Every plot write_plots() may write beside --plot, checked against the other outputs now:
     // not after the runs, with half the files written.
@@ -199,24 +227,23 @@ int run_bench(const BenchOptions& o) {
     std::vector<std::pair<std::string, std::string>> outputs = {{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}};
     std::map<std::string, std::size_t> planned;  // plot path -> the scene it belongs to
     std::size_t scene_index = 0;
-    auto plan = [&](const std::string& what, const std::string& path) {
-      const auto [it, added] = planned.emplace(path, scene_index);
-      if (added) outputs.emplace_back("--plot's " + what + " plot", path);
+    auto plan = [&](const std::string& what, const std::optional<std::string>& path) {
+      if (!path || *path == o.plot) return;  // not written, or the --plot file itself
+      const auto [it, added] = planned.emplace(*path, scene_index);
+      if (added) outputs.emplace_back("--plot's " + what + " plot", *path);
       else if (it->second != scene_index)
         throw InputError("scenes '" + scene_names[it->second] + "' and '" + scene_names[scene_index] +
-                         "' would write the same plot '" + path + "' (their names give one file name).");
+                         "' would write the same plot '" + *path + "' (their names give one file name).");
     };
-    const bool swept = std::any_of(variants.begin(), variants.end(), [](const Variant& v) { return !v.swept_keys.empty(); });
-    for (std::size_t i = 0; i < scenes.size(); ++i)
+    for (scene_index = 0; scene_index < scenes.size(); ++scene_index) {
+      const std::string& scene = scenes[scene_index].name;
       for (std::size_t j = 0; j < sizes.size(); ++j) {
-        scene_index = i;
         const std::string size = size_name(sizes[j].first, sizes[j].second);
-        if (i + j > 0) plan("pareto", plot_path(o.plot, "pareto", scenes[i].name, size));
-        if (swept) plan("sweep", plot_path(o.plot, "sweep", scenes[i].name, size));
+        plan("pareto", plot_plan.path(PlotKind::Pareto, scene, size, scene_index + j == 0));
+        plan("sweep", plot_plan.path(PlotKind::Sweep, scene, size));
       }
-    if (sizes.size() > 1)
-      for (scene_index = 0; scene_index < scenes.size(); ++scene_index)
-        plan("resolution", plot_path(o.plot, "resolution", scenes[scene_index].name));
+      plan("resolution", plot_plan.path(PlotKind::Resolution, scene));
+    }
     require_output_files(outputs);
   }
 
@@ -262,7 +289,7 @@ int run_bench(const BenchOptions& o) {
   const std::string revision = build_revision() + (o.shader_dir.empty() ? "" : " (shaders from " + o.shader_dir + ")");
   if (!o.json.empty()) write_text_file_atomic(o.json, bench_json({gi.renderer, gi.version, clock}, revision, runs).dump(2) + "\n");
   if (!o.csv.empty()) write_text_file_atomic(o.csv, results_csv(runs));
-  if (!o.plot.empty() && !runs.empty()) write_plots(o, runs, variants, clock);
+  if (!o.plot.empty() && !runs.empty()) write_plots(plot_plan, runs, variants, clock);
   std::printf("device: %s | %s | clock %s | revision %s\n", gi.renderer.c_str(), gi.version.c_str(), clock.c_str(), revision.c_str());
   return 0;
 }

@@ -44,6 +44,31 @@ std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path,
 
 namespace {
 
+// The views only `render` writes (each a .png), beside the renderer's (view_table).
+enum class RenderOnlyView { None, Classes, HitClasses, Difference };
+struct RenderOnlyViewInfo {
+  RenderOnlyView view;
+  const char* name;
+  const char* description;  // for --help
+};
+constexpr RenderOnlyViewInfo kRenderOnlyViews[] = {
+    {RenderOnlyView::Classes, "classes", "the reference's traceable / missing / sky pixels; --technique reference only"},
+    {RenderOnlyView::HitClasses, "hit-classes", "a technique's correct / false / missed hits against the reference"},
+    {RenderOnlyView::Difference, "difference", "|technique - truth| on reflective pixels, 0.25 = hottest"},
+};
+
+std::vector<std::string> render_only_view_names() {
+  std::vector<std::string> names;
+  for (const RenderOnlyViewInfo& v : kRenderOnlyViews) names.push_back(v.name);
+  return names;
+}
+
+RenderOnlyView render_only_view(const std::string& name) {
+  for (const RenderOnlyViewInfo& v : kRenderOnlyViews)
+    if (name == v.name) return v.view;
+  return RenderOnlyView::None;
+}
+
 struct RenderOptions {
   std::string scene = "gallery";
   std::string technique = "linear";
@@ -63,24 +88,17 @@ int run_render(const RenderOptions& o) {
   const auto [w, h] = parse_size(o.size);
   const ImageFormat format = image_format_for(o.out);
   require_output_files({{"--out", o.out}});
-  // "classes" is the reference's own view: traceable / missing / sky per pixel. "hit-classes"
-  // scores the technique against it: correct / false / missed hits.
-  const bool classes_view = o.view == "classes";
-  const bool hits_view = o.view == "hit-classes";
-  // "difference": |technique - truth| on reflective pixels, the compare grid's bottom row.
-  const bool diff_view = o.view == "difference";
-  const bool scored_view = hits_view || diff_view;  // these run the reference too
+  const RenderOnlyView own_view = render_only_view(o.view);
+  const bool classes_view = own_view == RenderOnlyView::Classes;  // the reference's own classes
+  const bool diff_view = own_view == RenderOnlyView::Difference;  // the compare grid's bottom row
+  // hit-classes and difference score a technique: they run the reference too.
+  const bool scored_view = own_view == RenderOnlyView::HitClasses || diff_view;
   if (classes_view && !technique_info(o.technique).truth)
     throw InputError("--view classes needs --technique reference.");
   if ((classes_view || scored_view) && format != ImageFormat::Png)
     throw InputError("--view " + o.view + " writes a .png.");
-  const std::vector<std::string> views = view_mode_names();
-  if (!classes_view && !scored_view && std::find(views.begin(), views.end(), o.view) == views.end()) {
-    std::string known;
-    for (const std::string& v : views) known += v + ", ";
-    throw InputError("unknown view '" + o.view + "' (known: " + known + "classes, hit-classes, difference).");
-  }
-  const ViewMode view = classes_view || scored_view ? ViewMode::Final : parse_view_mode(o.view);
+  const ViewMode view =
+      own_view != RenderOnlyView::None ? ViewMode::Final : parse_view_mode(o.view, render_only_view_names());
   Scene scene = load_scene(o.scene);
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   std::string technique_name = o.technique;
@@ -201,7 +219,8 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
   std::string views;
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
-  c->add_option("--view", o->view, "What to write: " + views + "|classes (reference only)|hit-classes (a technique against the reference)|difference (|technique - truth|, 0.25 = hottest).")->capture_default_str();
+  for (const RenderOnlyViewInfo& v : kRenderOnlyViews) views += "|" + std::string(v.name) + " (" + v.description + ")";
+  c->add_option("--view", o->view, "What to write: " + views + ".")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");

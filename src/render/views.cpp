@@ -63,11 +63,12 @@ const std::vector<std::string>& view_mode_names() {
   return names;
 }
 
-ViewMode parse_view_mode(const std::string& name) {
+ViewMode parse_view_mode(const std::string& name, const std::vector<std::string>& also_known) {
   for (const ViewInfo& v : view_table())
     if (v.name == name) return v.mode;
   std::string known;
-  for (const auto& n : view_mode_names()) known += (known.empty() ? "" : ", ") + n;
+  for (const auto* list : {&view_mode_names(), &also_known})
+    for (const auto& n : *list) known += (known.empty() ? "" : ", ") + n;
   throw InputError("unknown view '" + name + "' (known: " + known + ").");
 }
 

@@ -52,7 +52,8 @@ struct ViewInfo {
 const std::vector<ViewInfo>& view_table();
 // Names as the CLI takes them ("final", "reflection", ...), in ViewMode order.
 const std::vector<std::string>& view_mode_names();
-ViewMode parse_view_mode(const std::string& name);  // throws InputError
+// Throws InputError naming every view, and `also_known` after them (a command's own views).
+ViewMode parse_view_mode(const std::string& name, const std::vector<std::string>& also_known = {});
 const ViewInfo& view_info(ViewMode mode);
 
 }  // namespace ssr
