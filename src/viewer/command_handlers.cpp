@@ -105,6 +105,11 @@ void Viewer::on_Resize(const std::string& a) {
 void Viewer::on_Minimise(const std::string&) { glfwIconifyWindow(window_->handle()); }
 void Viewer::on_Restore(const std::string&) { glfwRestoreWindow(window_->handle()); }
 void Viewer::on_Panel(const std::string& a) { panel_shown_ = a == "on"; }
+
+void Viewer::on_Section(const std::string& a) {  // "NAME open|closed", checked by the parser
+  const auto space = a.find(' ');
+  section_request_[parse_panel_section(a.substr(0, space))] = a.substr(space + 1) == "open";
+}
 void Viewer::on_Reload(const std::string&) { reload(); }
 
 void Viewer::on_Path(const std::string& a) {
@@ -143,7 +148,9 @@ void Viewer::on_Inspect(const std::string& a) {
     frame(0.0);
   }
   const auto space = a.find(' ');
-  const PixelValues j = inspect(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
+  const glm::ivec2 p(std::stoi(a.substr(0, space)), std::stoi(a.substr(space + 1)));
+  const PixelValues j = inspect(p.x, p.y);  // throws outside the image
+  pinned_ = p;  // the panel and the ring show it too, as after pressing I there
   std::printf("ssrlab-view: inspect %s\n", j.dump().c_str());
   std::fflush(stdout);
 }
@@ -152,7 +159,7 @@ void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : 
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
 // "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr",
-// "psnr_truth" (the grid's A against its truth)}.
+// "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn)}.
 void Viewer::on_Status(const std::string&) {
   nlohmann::json j;
   j["message"] = status_;
@@ -164,6 +171,10 @@ void Viewer::on_Status(const std::string&) {
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
   j["psnr_truth"] = truth_figure_shown() ? nlohmann::json(psnr_truth_) : nlohmann::json(nullptr);
+  nlohmann::json open = nlohmann::json::array();  // as last drawn (none with the panel hidden)
+  for (const SectionInfo& s : kPanelSections)
+    if (panel_shown_ && section_open_[s.section]) open.push_back(s.name);
+  j["sections_open"] = open;
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);
 }

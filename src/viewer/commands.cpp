@@ -76,6 +76,13 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
       if (a != "now" && a != "rest" && a != "live" && a != "manual")
         throw InputError(at + "'" + a + "' is not one of now, rest, live, manual.");
       return;
+    case ArgForm::Section: {  // "NAME open|closed", joined like a pixel's
+      const auto space = a.find(' ');
+      parse_panel_section(a.substr(0, space));
+      if (const std::string state = a.substr(space + 1); state != "open" && state != "closed")
+        throw InputError(at + "'" + state + "' is not open or closed.");
+      return;
+    }
     case ArgForm::Pixel: {  // "X Y": parse_viewer_script joins the two words
       const auto space = a.find(' ');
       for (const std::string& v : {a.substr(0, space), a.substr(space + 1)}) {
@@ -114,6 +121,21 @@ CompareMode parse_compare_mode(const std::string& name) {
   throw InputError("compare mode '" + name + "' is not one of " + known + ".");
 }
 
+PanelSection parse_panel_section(const std::string& name) {
+  std::string known;
+  for (const SectionInfo& s : kPanelSections) {
+    if (name == s.name) return s.section;
+    known += (known.empty() ? "" : ", ") + std::string(s.name);
+  }
+  throw InputError("panel section '" + name + "' is not one of " + known + ".");
+}
+
+static_assert([] {
+  for (std::size_t i = 0; i < kPanelSectionCount; ++i)
+    if (static_cast<std::size_t>(kPanelSections[i].section) != i) return false;
+  return true;
+}(), "kPanelSections is in PanelSection order");
+
 std::vector<std::string> compare_mode_names() {
   std::vector<std::string> names;
   for (const CompareInfo& c : kCompareModes) names.push_back(c.name);
@@ -137,9 +159,16 @@ static_assert([] {
 
 std::string commands_markdown() {
   std::string out = "| command | what it does |\n|---|---|\n";
-  for (const CommandInfo& c : kCommands)
-    out += "| `" + markdown_cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + markdown_cell(c.help) +
-           " |\n";
+  for (const CommandInfo& c : kCommands) {
+    std::string help = c.help;
+    // A form whose names come from a table: listed from it, not in the help text.
+    std::vector<std::string> names;
+    if (c.form == ArgForm::Compare) names = compare_mode_names();
+    for (const SectionInfo& s : kPanelSections)
+      if (c.form == ArgForm::Section) names.push_back(s.name);
+    for (std::size_t i = 0; i < names.size(); ++i) help += (i ? ", " : " ") + names[i];
+    out += "| `" + markdown_cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + markdown_cell(help) + " |\n";
+  }
   return out;
 }
 
@@ -164,7 +193,7 @@ std::vector<ScriptCommand> parse_viewer_script(const std::string& text, const st
                                 [&](const CommandInfo& k) { return verb == k.name; });
     if (v == std::end(kCommands)) throw InputError(at + "unknown command '" + verb + "'.");
     c.verb = v->verb;
-    const std::size_t want = v->form == ArgForm::None ? 0 : v->form == ArgForm::Pixel ? 2 : 1;
+    const std::size_t want = v->form == ArgForm::None ? 0 : v->form == ArgForm::Pixel || v->form == ArgForm::Section ? 2 : 1;
     if (c.args.size() != want)
       throw InputError(at + "'" + verb + "' takes " + (want == 0 ? "no argument" : want == 1 ? "one argument" : "two arguments") +
                        ", not " + std::to_string(c.args.size()) + ".");

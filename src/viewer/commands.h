@@ -26,7 +26,7 @@
   X(Preset, "preset", PresetName, "NAME", "technique A set up by a named preset of the CLI (listed by ssrlab techniques, e.g. thesis-hq)") \
   X(PresetB, "preset-b", PresetName, "NAME", "technique B set up by a named preset") \
   X(Swap, "swap", None, "", "swap techniques A and B, with their parameters")                            \
-  X(Compare, "compare", Compare, "off|split|diff|grid", "A alone, A | B, |A - B|, or the 2x2 grid (kCompareModes)") \
+  X(Compare, "compare", Compare, "MODE", "A alone, A | B, |A - B|, or the 2x2 grid, MODE one of") \
   X(Split, "split", Fraction, "X", "split view with the divider at X (0..1 of the image width)")        \
   X(View, "view", View, "NAME", "a display view (final, reflection, ..., traceable)")                  \
   X(Exposure, "exposure", Number, "STOPS", "display exposure")                                          \
@@ -40,6 +40,7 @@
   X(Minimise, "minimise", None, "", "iconify the window")                                               \
   X(Restore, "restore", None, "", "restore the window")                                                 \
   X(Panel, "panel", OnOff, "on|off", "show or hide the side panel (F2)")                                \
+  X(Section, "section", Section, "NAME open|closed", "open or close a section of the side panel, NAME one of") \
   X(Reload, "reload", None, "", "reload the shaders (F5)")                                               \
   X(Path, "path", Text, "NAME|free", "follow the scene's camera path NAME (free: the orbit camera)")     \
   X(Time, "time", NonNegative, "SECONDS", "jump to a scene time (object motion and the path's camera)")  \
@@ -48,7 +49,7 @@
   X(Truth, "truth", TruthPolicy, "now|rest|live|manual",                                                \
     "the on-demand side (the reference): compute now, once the camera rests, every changed frame, or only when asked") \
   X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays)") \
-  X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line") \
+  X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line, and pin the inspector there") \
   X(Magnifier, "magnifier", Zoom, "off|2..16", "the magnifier at the cursor (nearest filtering) at this zoom, or off") \
   X(Status, "status", None, "", "print the status bar's message, device, frame time and truth state as one JSON line")
 
@@ -72,8 +73,34 @@ inline constexpr CompareInfo kCompareModes[] = {
 CompareMode parse_compare_mode(const std::string& name);
 std::vector<std::string> compare_mode_names();
 
+// The side panel's sections, declared once: the panel's headers, the `section` command, status.
+enum PanelSection : int {
+  SectionInspector, SectionScene, SectionLights, SectionTime, SectionView,
+  SectionTechniqueA, SectionTechniqueB, SectionPresets, SectionTiming
+};
+struct SectionInfo {
+  PanelSection section;
+  const char* name;   // as scripts write it
+  const char* label;  // the panel's header
+  bool open_at_start;
+};
+inline constexpr SectionInfo kPanelSections[] = {
+    {SectionInspector, "inspector", "pixel inspector", false},
+    {SectionScene, "scene", "scene and camera", true},
+    {SectionLights, "lights", "lights and environment", false},
+    {SectionTime, "time", "time and camera paths", false},
+    {SectionView, "view", "view and compare", true},
+    {SectionTechniqueA, "technique-a", "technique A", true},
+    {SectionTechniqueB, "technique-b", "technique B (shown while comparing)", true},
+    {SectionPresets, "presets", "presets", false},
+    {SectionTiming, "timing", "timing", true},
+};
+inline constexpr std::size_t kPanelSectionCount = std::size(kPanelSections);
+// The named section; throws InputError listing the names.
+PanelSection parse_panel_section(const std::string& name);
+
 // The form of a command's arguments (each checked before a script runs).
-enum class ArgForm { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png, OnOff, TruthPolicy, Pixel, Zoom, PresetName };
+enum class ArgForm { None, Text, Technique, Number, NonNegative, Fraction, Count, Size, Compare, View, Assignment, Png, OnOff, TruthPolicy, Pixel, Zoom, PresetName, Section };
 
 enum class Verb {
 #define SSRLAB_X(id, verb, form, args, help) id,
@@ -86,7 +113,7 @@ struct CommandInfo {
   const char* name;   // as scripts write it
   ArgForm form;
   const char* args;   // for the help: "NAME", "WxH", ...
-  const char* help;   // one line
+  const char* help;   // one line; the help adds the names of a form with a table (kCompareModes ...)
 };
 
 inline constexpr CommandInfo kCommands[] = {
@@ -101,7 +128,7 @@ const CommandInfo& command_info(Verb verb);
 struct ScriptCommand {
   int line = 0;                   // 1-based, for messages; 0 = not from a script (keys, UI)
   Verb verb = Verb::Frames;
-  std::vector<std::string> args;  // already checked for count and form (a pixel's "X Y" is one)
+  std::vector<std::string> args;  // already checked for count and form (two-word forms are one: "X Y")
 };
 
 // Parses and checks a script; `where` names it in messages ("script.txt").

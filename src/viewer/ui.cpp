@@ -365,10 +365,10 @@ void Viewer::side_panel(double dt) {
   ImGui::Separator();
   ImGui::BeginChild("##sections");
   ImGui::PushItemWidth(-label_width());
-  inspector_open_ = ImGui::CollapsingHeader("pixel inspector");
+  inspector_open_ = section_header(SectionInspector);
   if (inspector_open_) inspector_panel();
-  if (ImGui::CollapsingHeader("scene and camera", ImGuiTreeNodeFlags_DefaultOpen)) scene_panel();
-  if (ImGui::CollapsingHeader("lights and environment")) {
+  if (section_header(SectionScene)) scene_panel();
+  if (section_header(SectionLights)) {
     std::vector<Light> lights = lights_;
     Environment env = environment_;
     float ambient = ambient_;
@@ -380,11 +380,12 @@ void Viewer::side_panel(double dt) {
       }
     }
   }
-  if (ImGui::CollapsingHeader("time and camera paths")) time_panel();
-  if (ImGui::CollapsingHeader("view and compare", ImGuiTreeNodeFlags_DefaultOpen)) view_panel();
-  if (ImGui::CollapsingHeader("technique A", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(0);
-  if (compare_ != CompareOff && ImGui::CollapsingHeader("technique B", ImGuiTreeNodeFlags_DefaultOpen)) technique_panel(1);
-  if (ImGui::CollapsingHeader("presets")) {
+  if (section_header(SectionTime)) time_panel();
+  if (section_header(SectionView)) view_panel();
+  if (section_header(SectionTechniqueA)) technique_panel(0);
+  section_open_[SectionTechniqueB] = false;  // not drawn without B
+  if (compare_ != CompareOff && section_header(SectionTechniqueB)) technique_panel(1);
+  if (section_header(SectionPresets)) {
     ImGui::InputText("file", preset_path_, sizeof preset_path_);
     if (ImGui::Button("save")) ui_command(Verb::PresetSave, preset_path_);
     ImGui::SameLine();
@@ -406,11 +407,19 @@ void Viewer::side_panel(double dt) {
     }
     ImGui::TextDisabled("techniques, parameters, view, camera, lights (JSON)");
   }
-  if (ImGui::CollapsingHeader("timing", ImGuiTreeNodeFlags_DefaultOpen)) timing_panel(dt);
+  if (section_header(SectionTiming)) timing_panel(dt);
   ImGui::PopItemWidth();
   ImGui::EndChild();
   ImGui::PopItemWidth();
   ImGui::End();
+}
+
+bool Viewer::section_header(PanelSection s) {
+  const SectionInfo& info = kPanelSections[s];
+  if (section_request_[s]) ImGui::SetNextItemOpen(*section_request_[s]);
+  section_request_[s].reset();
+  section_open_[s] = ImGui::CollapsingHeader(info.label, info.open_at_start ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+  return section_open_[s];
 }
 
 void Viewer::scene_panel() {

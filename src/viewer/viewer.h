@@ -6,6 +6,7 @@
 //   window.cpp            GLFW + ImGui, keys as events      camera_controller.cpp  orbit / pan / fly
 //   panels.cpp            widgets from the parameter tables  preset.cpp  presets as JSON
 #pragma once
+#include <array>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -124,6 +125,9 @@ class Viewer {
   void timing_panel(double dt);
   void draw_progress(const std::string& what, double fraction);
   void inspector_panel();
+  // The collapsing header of a panel section (kPanelSections), opened or closed first when the
+  // `section` command asked; true while it is open.
+  bool section_header(PanelSection s);
   void draw_magnifier();
   PixelValues inspect(int x, int y) const;  // inspector.h's values of image pixel (x, y)
   bool view_offered(int view) const;
@@ -206,6 +210,10 @@ class Viewer {
   // only when asked (Renderer::debug_outputs): while its panel is open, and after a scripted
   // `inspect`.
   bool inspector_open_ = false, inspected_ = false;
+  // Sections: what the `section` command asked for (applied at the next draw) and what was
+  // open at the last draw (`status` reports it).
+  std::array<std::optional<bool>, kPanelSectionCount> section_request_{};
+  std::array<bool, kPanelSectionCount> section_open_{};
 };
 
 }  // namespace ssr

@@ -134,4 +134,20 @@ expect2 'viewport limit\|window system' --size 100000x100 --frames 1
 bad_script bad5.txt 'technique stochastic\nframes 1\nview steps\n' 'bad5.txt:3:.*not filled by stochastic'
 bad_script bad6.txt 'frames 1\nresize 100000x10\n' 'bad6.txt:2:.*100000x10 is not supported'
 bad_script bad7.txt 'frames 1\nscreenshot nowhere/x.png\n' 'bad7.txt:2:.*does not exist'
+bad_script bad8.txt 'section nosuch open\n' 'bad8.txt:1:.*panel section .nosuch. is not one of inspector'
+bad_script bad9.txt 'section inspector ajar\n' 'bad9.txt:1:.*not open or closed'
+bad_script bad10.txt 'section inspector\n' 'bad10.txt:1:.*takes two arguments'
+
+# Panel sections: `section` opens and closes them as a click would; status lists the open ones.
+printf 'frames 1\nstatus\nsection inspector open\nsection scene closed\nsection technique-b open\nframes 1\nstatus\ncompare split\nframes 1\nstatus\npanel off\nframes 1\nstatus\n' > sections.txt
+view --scene cornell --size 160x90 --script sections.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - <<'PY'
+import json
+s = [json.loads(l.split('status ', 1)[1])['sections_open'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
+print('open sections:', s)
+assert s[0] == ['scene', 'view', 'technique-a', 'timing'], s[0]  # kPanelSections' open_at_start
+assert s[1] == ['inspector', 'view', 'technique-a', 'timing'], s[1]
+assert s[2] == ['inspector', 'view', 'technique-a', 'technique-b', 'timing'], 'B opens once drawn: ' + str(s[2])
+assert s[3] == [], 'a hidden panel shows no section'
+PY
 echo "viewer script ok"
