@@ -25,11 +25,15 @@ void main() {
   ivec2 size = ivec2(frame.viewport.xy);
   if (any(greaterThanEqual(p, size))) return;
   vec4 centre = texelFetch(radiance_tex, p, 0);
+  if (!reflective_at(p)) {  // before the rest of the G-buffer (gbuffer.glsl)
+    imageStore(out_reflection, p, resolve(centre));
+    return;
+  }
   GSample g = gbuffer_fetch(p);
   int r = pass.params.bilateral != 0 ? clamp(pass.params.bilateral_radius, 0, 8) : 0;
   float noise = clamp(sqrt(texelFetch(stats_tex, p, 0).r) / max(luminance(centre.rgb), 1e-3), 0.0, 1.0);
   float sigma = mix(0.5, max(pass.params.bilateral_sigma, 0.5), noise) * clamp(g.roughness / 0.2, 0.0, 1.0);
-  if (r == 0 || !is_reflective(g) || sigma < 0.3) {
+  if (r == 0 || sigma < 0.3) {
     imageStore(out_reflection, p, resolve(centre));
     return;
   }
