@@ -110,6 +110,7 @@ void Viewer::on_Section(const std::string& a) {  // "NAME open|closed", checked 
   const auto space = a.find(' ');
   section_request_[parse_panel_section(a.substr(0, space))] = a.substr(space + 1) == "open";
 }
+
 void Viewer::on_Reload(const std::string&) { reload(); }
 
 void Viewer::on_Path(const std::string& a) {

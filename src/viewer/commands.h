@@ -91,7 +91,7 @@ inline constexpr SectionInfo kPanelSections[] = {
     {SectionTime, "time", "time and camera paths", false},
     {SectionView, "view", "view and compare", true},
     {SectionTechniqueA, "technique-a", "technique A", true},
-    {SectionTechniqueB, "technique-b", "technique B (shown while comparing)", true},
+    {SectionTechniqueB, "technique-b", "technique B", true},  // drawn while comparing
     {SectionPresets, "presets", "presets", false},
     {SectionTiming, "timing", "timing", true},
 };
