@@ -8,6 +8,9 @@
 // (techniques/denoiser.h): premultiplied radiance at IMG_OUT and the first sample's ray (hit
 // vector, pdf) at IMG_OUT2, with samples that change every frame.
 //
+// Compiled with SSR_PLAIN_RAY (the tracer's options are the plain ones, shared/ray_options.h)
+// it sees those options as constants; tests define SSR_TEST_GENERAL_RAY to compare the two.
+//
 // Compiled with SSR_RAY_LIST (the tracers' `compact` option) it runs one lane per pixel of the
 // classification's ray list (render/classification.h), which already wrote the outputs of every
 // pixel without work; otherwise one lane per screen pixel.
@@ -66,7 +69,11 @@ float reflect_pixel(ivec2 p) {
     store_debug(p, vec4(0.0));
     return 0.0;
   }
+#if defined(SSR_PLAIN_RAY) && !defined(SSR_TEST_GENERAL_RAY)
+  RayOptions o = plain_ray(params.ray);  // constants: shared/ray_options.h says why
+#else
   RayOptions o = params.ray;
+#endif
   float rough = o.roughness >= 0.0 ? o.roughness : g.roughness;
   vec3 v = -normalize(g.pos_vs);
   bool mirror = rough < 0.01;

@@ -39,20 +39,27 @@ class TracerTechnique : public TechniqueWithParams<P> {
   // The variant the current parameters run compiles here (so a compile error surfaces now); the
   // others, the classifier and the denoiser on first use.
   void load(const gl::ShaderSource& src) override {
-    const bool compact = this->params_.ray.compact != 0, denoise = this->params_.ray.denoise.enabled != 0;
-    gl::Program p = compile(src, compact, denoise, false);
+    const Variant v{this->params_.ray.compact != 0, this->params_.ray.denoise.enabled != 0, false,
+                    shared::is_plain_ray(resolved_ray(this->params_.ray))};
+    gl::Program p = compile(src, v);
     src_ = src;
-    for (gl::Program& v : programs_) v = gl::Program();
-    programs_[variant(compact, denoise, false)] = std::move(p);
+    for (gl::Program& program : programs_) program = gl::Program();
+    programs_[v.index()] = std::move(p);
     classifier_loaded_ = denoiser_loaded_ = false;
   }
 
-  // The parameters as this frame runs them: every "auto" resolved. The shared edge fade's auto
-  // is on with the Roberts blend only (the standard composite already falls back to the
-  // environment at low confidence; fading there only loses reflections).
+  // The shared ray options' "auto" resolved. The edge fade's auto is on with the Roberts blend
+  // only (the standard composite already falls back to the environment at low confidence;
+  // fading there only loses reflections).
+  static shared::RayOptions resolved_ray(shared::RayOptions r) {
+    if (r.edge_fade < 0) r.edge_fade = r.blend == 1 ? 1 : 0;
+    return r;
+  }
+
+  // The parameters as this frame runs them: every "auto" resolved.
   P resolved(const AutoContext& ctx) const {
     P p = this->params_;
-    if (p.ray.edge_fade < 0) p.ray.edge_fade = p.ray.blend == 1 ? 1 : 0;
+    p.ray = resolved_ray(p.ray);
     if (resolve_) resolve_(p, ctx);
     return p;
   }
@@ -62,7 +69,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
     const bool compact = p.ray.compact != 0, denoise = p.ray.denoise.enabled != 0;
     // The denoiser's inputs take the debug image's place: no debug variant of that one.
     const bool debug = in.debug != nullptr && !denoise;
-    const gl::Program& program = program_for(compact, denoise, debug);
+    const gl::Program& program = program_for({compact, denoise, debug, shared::is_plain_ray(p.ray)});
     if ((compact || denoise) && !classifier_loaded_) {
       classifier_.load(src_);
       classifier_loaded_ = true;
@@ -130,27 +137,33 @@ class TracerTechnique : public TechniqueWithParams<P> {
   std::uint32_t extra_reads_ = 0;
 
  private:
-  static std::size_t variant(bool compact, bool denoise, bool debug) {
-    return (compact ? 1 : 0) + (denoise ? 2 : 0) + (debug ? 4 : 0);
-  }
-  gl::Program compile(const gl::ShaderSource& src, bool compact, bool denoise, bool debug) const {
+  // A compiled variant of the tracer's shader, each flag a define of ssr_main.glsl.
+  struct Variant {
+    bool compact;  // SSR_RAY_LIST: over the classification's ray list
+    bool denoise;  // SSR_DENOISE_OUTPUT: writes the denoiser's inputs
+    bool debug;    // SSR_DEBUG_IMAGE: writes the debug image
+    bool plain;    // SSR_PLAIN_RAY: the plain ray options as constants (shared/ray_options.h)
+    std::size_t index() const { return (compact ? 1 : 0) + (denoise ? 2 : 0) + (debug ? 4 : 0) + (plain ? 8 : 0); }
+  };
+  gl::Program compile(const gl::ShaderSource& src, Variant v) const {
     std::vector<std::string> defines;
-    if (compact) defines.push_back("SSR_RAY_LIST");
-    if (denoise) defines.push_back("SSR_DENOISE_OUTPUT");
-    if (debug) defines.push_back("SSR_DEBUG_IMAGE");
+    if (v.compact) defines.push_back("SSR_RAY_LIST");
+    if (v.denoise) defines.push_back("SSR_DENOISE_OUTPUT");
+    if (v.debug) defines.push_back("SSR_DEBUG_IMAGE");
+    if (v.plain) defines.push_back("SSR_PLAIN_RAY");
     return gl::Program::compute(src, shader_, defines);
   }
-  const gl::Program& program_for(bool compact, bool denoise, bool debug) {
-    gl::Program& p = programs_[variant(compact, denoise, debug)];
-    if (!p) p = compile(src_, compact, denoise, debug);
+  const gl::Program& program_for(Variant v) {
+    gl::Program& p = programs_[v.index()];
+    if (!p) p = compile(src_, v);
     return p;
   }
 
   std::string shader_;
   Resolver resolve_;
   gl::ShaderSource src_;
-  // By variant(): every pixel / ray list, x plain / denoiser inputs, x without / with the debug image.
-  std::array<gl::Program, 8> programs_;
+  // By Variant::index(): every flag on or off.
+  std::array<gl::Program, 16> programs_;
   bool classifier_loaded_ = false, denoiser_loaded_ = false;
   TileClassifier classifier_;
   Denoiser denoiser_;
