@@ -112,22 +112,26 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
 
 }  // namespace
 
-CompareMode parse_compare_mode(const std::string& name) {
+namespace {
+
+// The entry of a named table (kCompareModes, kPanelSections) called `name`; an InputError
+// listing the names otherwise ("compare mode 'x' is not one of off, split, ...").
+template <class Entry, std::size_t N>
+const Entry& named_entry(const Entry (&table)[N], const std::string& name, const std::string& what) {
   std::string known;
-  for (const CompareInfo& c : kCompareModes) {
-    if (name == c.name) return c.mode;
-    known += (known.empty() ? "" : ", ") + std::string(c.name);
+  for (const Entry& e : table) {
+    if (name == e.name) return e;
+    known += (known.empty() ? "" : ", ") + std::string(e.name);
   }
-  throw InputError("compare mode '" + name + "' is not one of " + known + ".");
+  throw InputError(what + " '" + name + "' is not one of " + known + ".");
 }
 
+}  // namespace
+
+CompareMode parse_compare_mode(const std::string& name) { return named_entry(kCompareModes, name, "compare mode").mode; }
+
 PanelSection parse_panel_section(const std::string& name) {
-  std::string known;
-  for (const SectionInfo& s : kPanelSections) {
-    if (name == s.name) return s.section;
-    known += (known.empty() ? "" : ", ") + std::string(s.name);
-  }
-  throw InputError("panel section '" + name + "' is not one of " + known + ".");
+  return named_entry(kPanelSections, name, "panel section").section;
 }
 
 static_assert([] {

@@ -6,36 +6,14 @@
 #include <cstring>
 
 #include "gl_test_env.h"
+#include "tracer_test_util.h"
 #include "render/renderer.h"
 #include "scene/builtin_scenes.h"
 #include "shared/hiz.h"
 #include "shared/ray_options.h"
-#include "techniques/assignments.h"
 #include "techniques/tracer.h"
-#include "registry/registry.h"
 
 using namespace ssr;
-
-namespace {
-
-struct Outputs {
-  RgbaImageF reflection, refraction, debug, color;
-};
-
-// Two frames at the technique's defaults (the second one's denoiser has history), from `shaders`.
-Outputs render_with(Renderer& r, const std::string& technique, const std::vector<std::string>& sets,
-                    const gl::ShaderSource& shaders) {
-  auto t = create_technique(technique);
-  apply_assignments(*t, sets);
-  t->load(shaders);
-  r.debug_outputs = true;  // compared too
-  for (int f = 1; f <= 2; ++f)
-    r.render(FrameRequest(r.scene().cameras[0], FrameTime{f, 0.0f}), *t, ViewMode::Final, nullptr);
-  return {r.read_texture(r.reflection()), r.read_texture(r.refraction()), r.read_texture(r.debug()),
-          r.read_texture(r.color())};
-}
-
-}  // namespace
 
 TEST(PlainRay, TheDefaultsArePlainAndPlainRayKeepsThem) {
   const shared::RayOptions defaults{};
@@ -65,13 +43,9 @@ TEST(PlainRay, SameImageAsTheGeneralCode) {
       for (const bool denoise : {false, true}) {
         SCOPED_TRACE(scene + " / " + t + (denoise ? " denoised" : ""));
         const std::vector<std::string> sets = {t + ".denoise=" + (denoise ? "true" : "false")};
-        const Outputs plain = render_with(r, t, sets, r.shaders());
-        const Outputs full = render_with(r, t, sets, general);
-        const std::string name = "plain-ray-" + scene + "-" + t + (denoise ? "-denoised" : "");
-        test::expect_same_image(full.reflection, plain.reflection, name + "-reflection");
-        test::expect_same_image(full.refraction, plain.refraction, name + "-refraction");
-        test::expect_same_image(full.color, plain.color, name + "-color");
-        if (!denoise) test::expect_same_image(full.debug, plain.debug, name + "-debug");
+        const test::TechniqueOutputs plain = test::render_outputs(r, t, sets, r.shaders());
+        const test::TechniqueOutputs full = test::render_outputs(r, t, sets, general);
+        test::expect_same_outputs(full, plain, "plain-ray-" + scene + "-" + t + (denoise ? "-denoised" : ""), !denoise);
       }
   }
   test::expect_no_gl_errors();

@@ -8,6 +8,7 @@
 
 #include "core/cli_common.h"
 #include "eval/runner.h"
+#include "render/renderer.h"
 #include "scene/scene_io.h"
 #include "techniques/assignments.h"
 #include "registry/registry.h"
@@ -55,5 +56,24 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
 }
 
 void clear_scored_frames() { cache().clear(); }
+
+TechniqueOutputs render_outputs(Renderer& r, const std::string& technique, const std::vector<std::string>& assignments,
+                                const gl::ShaderSource& shaders) {
+  auto t = create_technique(technique);
+  apply_assignments(*t, assignments);
+  t->load(shaders);
+  r.debug_outputs = true;
+  for (int f = 1; f <= 2; ++f)
+    r.render(FrameRequest(r.scene().cameras[0], FrameTime{f, 0.0f}), *t, ViewMode::Final, nullptr);
+  return {r.read_texture(r.reflection()), r.read_texture(r.refraction()), r.read_texture(r.debug()),
+          r.read_texture(r.color())};
+}
+
+void expect_same_outputs(const TechniqueOutputs& a, const TechniqueOutputs& b, const std::string& name, bool debug) {
+  expect_same_image(a.reflection, b.reflection, name + "-reflection");
+  expect_same_image(a.refraction, b.refraction, name + "-refraction");
+  expect_same_image(a.color, b.color, name + "-color");
+  if (debug) expect_same_image(a.debug, b.debug, name + "-debug");
+}
 
 }  // namespace ssr::test

@@ -7,6 +7,12 @@
 
 #include "eval/breakdown.h"
 #include "eval/metrics.h"
+#include "gl/program.h"
+#include "core/image.h"
+
+namespace ssr {
+class Renderer;
+}
 
 namespace ssr::test {
 
@@ -22,5 +28,19 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
                             const std::vector<std::string>& assignments, const std::string& camera = "");
 
 void clear_scored_frames();
+
+// Every image a technique writes, for comparing two ways of running it.
+struct TechniqueOutputs {
+  RgbaImageF reflection, refraction, debug, color;
+};
+
+// Two frames of `technique` with `assignments`, loaded from `shaders` (the second frame's
+// denoiser has history), with the debug image written.
+TechniqueOutputs render_outputs(Renderer& r, const std::string& technique, const std::vector<std::string>& assignments,
+                                const gl::ShaderSource& shaders);
+
+// expect_same_image on each image (the debug image only when `debug`); `name` prefixes the
+// names of the images saved on a mismatch.
+void expect_same_outputs(const TechniqueOutputs& a, const TechniqueOutputs& b, const std::string& name, bool debug);
 
 }  // namespace ssr::test
