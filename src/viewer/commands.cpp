@@ -168,8 +168,8 @@ std::string commands_markdown() {
     // A form whose names come from a table: listed from it, not in the help text.
     std::vector<std::string> names;
     if (c.form == ArgForm::Compare) names = compare_mode_names();
-    for (const SectionInfo& s : kPanelSections)
-      if (c.form == ArgForm::Section) names.push_back(s.name);
+    if (c.form == ArgForm::Section)
+      for (const SectionInfo& s : kPanelSections) names.push_back(s.name);
     for (std::size_t i = 0; i < names.size(); ++i) help += (i ? ", " : " ") + names[i];
     out += "| `" + markdown_cell(std::string(c.name) + (*c.args ? " " : "") + c.args) + "` | " + markdown_cell(help) + " |\n";
   }
