@@ -41,14 +41,14 @@ GSample gbuffer_fetch(ivec2 p) {
   return g;
 }
 
-bool reflective(float depth, uint flags) {
+bool reflective_from(float depth, uint flags) {
   return !is_background(depth) && (flags & MATERIAL_FLAG_REFLECTIVE) != 0u;
 }
-bool is_reflective(GSample g) { return reflective(g.depth, g.flags); }
+bool is_reflective(GSample g) { return reflective_from(g.depth, g.flags); }
 // The same from the two texels it needs, before the rest of the G-buffer. Where a pass's other
 // reads come first, its lanes without work pay for them: the bilateral filter 0.042 -> 0.040 ms
 // on cornell at 1080p (H200). The tracers and the temporal stage did not change (within 0.5%).
-bool reflective_at(ivec2 p) { return reflective(texelFetch(g_depth, p, 0).r, texelFetch(g_material, p, 0).z); }
+bool reflective_at(ivec2 p) { return reflective_from(texelFetch(g_depth, p, 0).r, texelFetch(g_material, p, 0).z); }
 
 // Scene depth at a uv (nearest texel), as view-space z.
 float scene_view_z(vec2 uv) {

@@ -21,6 +21,15 @@ TEST(PlainRay, TheDefaultsArePlainAndPlainRayKeepsThem) {
   EXPECT_TRUE(shared::is_plain_ray(resolved));
   const shared::RayOptions same = shared::plain_ray(resolved);
   EXPECT_EQ(std::memcmp(&same, &resolved, sizeof same), 0) << "plain_ray changed plain options";
+  // Each option away from its plain value makes the options general.
+  for (int field = 0; field < 4; ++field) {
+    shared::RayOptions o = resolved;
+    if (field == 0) o.samples = 2;
+    if (field == 1) o.edge_fade = 1;
+    if (field == 2) o.falloff_distance = 5.0f;
+    if (field == 3) o.blend = 1;
+    EXPECT_FALSE(shared::is_plain_ray(o)) << "field " << field;
+  }
   // Options that are not plain become plain, and only the four fields change.
   shared::RayOptions other = resolved;
   other.samples = 4;
@@ -43,9 +52,15 @@ TEST(PlainRay, SameImageAsTheGeneralCode) {
       for (const bool denoise : {false, true}) {
         SCOPED_TRACE(scene + " / " + t + (denoise ? " denoised" : ""));
         const std::vector<std::string> sets = {t + ".denoise=" + (denoise ? "true" : "false")};
+        const std::string name = "plain-ray-" + scene + "-" + t + (denoise ? "-denoised" : "");
         const test::TechniqueOutputs plain = test::render_outputs(r, t, sets, r.shaders());
         const test::TechniqueOutputs full = test::render_outputs(r, t, sets, general);
-        test::expect_same_outputs(full, plain, "plain-ray-" + scene + "-" + t + (denoise ? "-denoised" : ""), !denoise);
+        test::expect_same_outputs(full, plain, name, !denoise);
+        if (!denoise) {  // and the variants without the debug image (what bench times)
+          const test::TechniqueOutputs plain_nodebug = test::render_outputs(r, t, sets, r.shaders(), false);
+          const test::TechniqueOutputs full_nodebug = test::render_outputs(r, t, sets, general, false);
+          test::expect_same_outputs(full_nodebug, plain_nodebug, name + "-nodebug", false);
+        }
       }
   }
   test::expect_no_gl_errors();

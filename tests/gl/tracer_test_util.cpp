@@ -58,11 +58,11 @@ TracerScore score_technique(const std::string& scene, int w, int h, const std::s
 void clear_scored_frames() { cache().clear(); }
 
 TechniqueOutputs render_outputs(Renderer& r, const std::string& technique, const std::vector<std::string>& assignments,
-                                const gl::ShaderSource& shaders) {
+                                const gl::ShaderSource& shaders, bool debug) {
   auto t = create_technique(technique);
   apply_assignments(*t, assignments);
   t->load(shaders);
-  r.debug_outputs = true;
+  r.debug_outputs = debug;
   for (int f = 1; f <= 2; ++f)
     r.render(FrameRequest(r.scene().cameras[0], FrameTime{f, 0.0f}), *t, ViewMode::Final, nullptr);
   return {r.read_texture(r.reflection()), r.read_texture(r.refraction()), r.read_texture(r.debug()),

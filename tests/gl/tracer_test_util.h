@@ -35,9 +35,9 @@ struct TechniqueOutputs {
 };
 
 // Two frames of `technique` with `assignments`, loaded from `shaders` (the second frame's
-// denoiser has history), with the debug image written.
+// denoiser has history); the debug image written when `debug` (its own program variant).
 TechniqueOutputs render_outputs(Renderer& r, const std::string& technique, const std::vector<std::string>& assignments,
-                                const gl::ShaderSource& shaders);
+                                const gl::ShaderSource& shaders, bool debug = true);
 
 // expect_same_image on each image (the debug image only when `debug`); `name` prefixes the
 // names of the images saved on a mismatch.
