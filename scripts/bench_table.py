@@ -41,7 +41,7 @@ def fmt(v, digits=2):
 
 
 def load(path, need_regions=False):
-    """A bench JSON's runs; one clear sentence (not a traceback) for any other file."""
+    """A bench JSON (its dict, 'runs' checked); one clear sentence (not a traceback) for any other file."""
     try:
         doc = json.load(open(path))
     except (OSError, ValueError) as e:
@@ -51,17 +51,16 @@ def load(path, need_regions=False):
     if need_regions and any("regions" not in r for run in doc["runs"] for r in run["results"]):
         sys.exit(f"bench_table.py: {path} has results without 'regions' (a bench JSON from before the "
                  "per-region verdicts): this table needs them")
-    return doc["runs"]
+    return doc
 
 
 def main(paths):
     for path in paths:
-        runs = load(path)
-        doc = json.load(open(path))
+        doc = load(path)
         dev = doc["device"]
         print(f"Device: {dev['renderer']}, {dev['version']}, clock `{dev['clock']}`, "
               f"revision `{doc['revision']}`\n")
-        for run in runs:
+        for run in doc["runs"]:
             w, h = run["size"]
             print(f"**{run['scene']} {w}x{h}** (inherent screen-space PSNR "
                   f"{fmt(run['inherent_psnr'])} dB)\n")
@@ -106,7 +105,7 @@ def region_cell(r, name):
 def regions(paths, only_defaults=False):
     """Per run: technique x region, 'PSNR vs ideal / correct coverage / false hits (noise floor)'."""
     for path in paths:
-        for run in load(path, need_regions=True):
+        for run in load(path, need_regions=True)["runs"]:
             present = [n for n in REGION_COLUMNS
                        if any(r.get("regions", {}).get(n, {}).get("pixels", 0) for r in run["results"])]
             w, h = run["size"]
@@ -129,7 +128,7 @@ def summary(paths):
     """One row per (scene, size), one column per technique: median ms, traceable PSNR against the
     ideal over what the technique handles, correct coverage."""
     for path in paths:
-        runs = load(path, need_regions=True)
+        runs = load(path, need_regions=True)["runs"]
         names = []
         for run in runs:
             for r in run["results"]:
@@ -157,7 +156,7 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
           f"{baseline} |")
     print("|---|---|---:|---|---|---:|---:|")
     for path in paths:
-        for run in load(path):
+        for run in load(path)["runs"]:
             base = [r for r in run["results"] if r["technique"] == baseline and not r.get("preset")]
             if not base:
                 continue

@@ -177,7 +177,7 @@ void Viewer::render() {
   const std::string fkey = frame_key();
   const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
   const int n_sides = active_sides();
-  renderer_->debug_outputs = inspector_open_ || inspected_;
+  renderer_->debug_outputs = section_open_[SectionInspector] || inspected_;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     const std::string key = fkey + "|" + technique_key(*s.technique, frame_index_);

@@ -365,8 +365,7 @@ void Viewer::side_panel(double dt) {
   ImGui::Separator();
   ImGui::BeginChild("##sections");
   ImGui::PushItemWidth(-label_width());
-  inspector_open_ = section_header(SectionInspector);
-  if (inspector_open_) inspector_panel();
+  if (section_header(SectionInspector)) inspector_panel();
   if (section_header(SectionScene)) scene_panel();
   if (section_header(SectionLights)) {
     std::vector<Light> lights = lights_;

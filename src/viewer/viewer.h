@@ -207,9 +207,9 @@ class Viewer {
   std::optional<glm::ivec2> hovered_, pinned_;
   int magnifier_ = 0;
   // The inspector reads the techniques' debug image (steps, hits, offsets), which they write
-  // only when asked (Renderer::debug_outputs): while its panel is open, and after a scripted
-  // `inspect`.
-  bool inspector_open_ = false, inspected_ = false;
+  // only when asked (Renderer::debug_outputs): while its panel section is open
+  // (section_open_[SectionInspector]), and after a scripted `inspect`.
+  bool inspected_ = false;
   // Sections: what the `section` command asked for (applied at the next draw) and what was
   // open at the last draw (`status` reports it).
   std::array<std::optional<bool>, kPanelSectionCount> section_request_{};
