@@ -24,6 +24,38 @@ bool same_surface(vec2 uv, GSample g, float expected_depth) {
   return abs(z_prev - z_exp) <= 0.03 * abs(z_exp);
 }
 
+// Last frame's history at `uv`, bilinear over the texels that held one (frames >= 1). A texel
+// that did not (not reflective last frame) is stored as zeros: averaged in, it pulled the
+// radiance, its confidence and the frame count towards 0 along every edge that moved (corridor's
+// disoccluded floor next to its pillars). False when none of the four held one.
+bool history_at(vec2 uv, out vec4 radiance, out vec2 stats) {
+  vec4 frames = textureGather(history_stats, uv, 1);  // texels (0,1) (1,1) (1,0) (0,0)
+  bvec4 held = greaterThanEqual(frames, vec4(1.0));
+  if (all(held)) {  // inside a surface: the sampler's bilinear fetch
+    radiance = textureLod(history_tex, uv, 0.0);
+    stats = textureLod(history_stats, uv, 0.0).rg;
+    return true;
+  }
+  radiance = vec4(0.0);
+  stats = vec2(0.0);
+  vec2 st = uv * frame.viewport.xy - 0.5;
+  ivec2 base = ivec2(floor(st));
+  vec2 f = st - vec2(base);
+  vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y)) * vec4(held);
+  float total = w.x + w.y + w.z + w.w;
+  if (!(total > 0.0)) return false;
+  const ivec2 corner[4] = ivec2[](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
+  for (int k = 0; k < 4; ++k) {
+    if (!(w[k] > 0.0)) continue;
+    ivec2 q = clamp(base + corner[k], ivec2(0), ivec2(frame.viewport.xy) - 1);  // as clamp-to-edge
+    radiance += w[k] * texelFetch(history_tex, q, 0);
+    stats += w[k] * texelFetch(history_stats, q, 0).rg;
+  }
+  radiance /= total;
+  stats /= total;
+  return true;
+}
+
 // The 3x3 neighbourhood's mean and spread of the current image (clamped at the image's edges).
 void temporal_neighbourhood(ivec2 p, out vec4 mean, out vec4 sigma) {
   vec4 m1 = vec4(0.0), m2 = vec4(0.0);
@@ -65,13 +97,14 @@ void temporal_accumulate(ivec2 p, GSample g, vec4 current, vec2 stats, out vec4 
   float best = 1e30;
   float sigma_lum = max(luminance(sigma.rgb), 1e-4);
   for (int i = 0; i < 2; ++i) {
-    if (!ok[i]) continue;
-    vec4 h = textureLod(history_tex, uv[i], 0.0);
+    vec4 h;
+    vec2 hs;
+    if (!ok[i] || !history_at(uv[i], h, hs)) continue;
     float distance_to_mean = abs(luminance(h.rgb - mean.rgb)) / sigma_lum;
     if (distance_to_mean < best) {
       best = distance_to_mean;
       history = h;
-      history_stats_value = textureLod(history_stats, uv[i], 0.0).rg;
+      history_stats_value = hs;
       reprojected = true;
     }
   }
