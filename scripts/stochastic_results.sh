@@ -27,8 +27,12 @@ case "$what" in
         --json "$out/paths-$scene-$path.json" > "$out/paths-$scene-$path.txt"
     done ;;
   bench)
-    ssrlab bench --scenes cornell,ramp --sizes 1080p,4k --frames 40 --techniques stochastic,hiz \
-      --sweep stochastic.half_resolution=false,true --preset stochastic-low --preset stochastic-medium \
-      --preset stochastic-ultra --json "$out/bench.json" > "$out/bench.txt" ;;
+    # The section's table: 1080p with pedestal and ultra, 4K on cornell and ramp without ultra.
+    ssrlab bench --scenes cornell,ramp,assets/scenes/pedestal.json --sizes 1080p --frames 30 --warmup 10 \
+      --techniques stochastic,hiz --sweep stochastic.half_resolution=false,true --preset stochastic-low \
+      --preset stochastic-medium --preset stochastic-ultra --json "$out/bench-1080p.json" > "$out/bench-1080p.txt"
+    ssrlab bench --scenes cornell,ramp --sizes 4k --frames 20 --warmup 10 \
+      --techniques stochastic,hiz --sweep stochastic.half_resolution=false,true --preset stochastic-low \
+      --preset stochastic-medium --json "$out/bench-4k.json" > "$out/bench-4k.txt" ;;
   *) echo "usage: $0 OUTDIR stages|paths|bench" >&2; exit 2 ;;
 esac
