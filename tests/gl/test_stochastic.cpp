@@ -301,9 +301,9 @@ TEST(Denoiser, TemporalAccumulationKeepsAStillSharpInput) {
 // noise) every frame, temporal accumulation alone: each frame uncovers floor beside the box, and
 // any history the floor had holds 1, so the output is 1 everywhere. The history texels of the
 // box hold zeros; a plain bilinear fetch across the silhouette averaged them in and darkened the
-// uncovered strip (corridor's floor beside its pillars scored 20.7 dB where the raw trace scored
-// 27.0: `ssrlab sequence --scene corridor --path dolly --frames 24 --size 320x180 --techniques hiz
-// --sweep hiz.denoise=false,true`, llvmpipe).
+// uncovered strip (corridor's recently uncovered floor beside its pillars scored 20.7 dB where
+// the raw trace scored 27.0: `ssrlab sequence --scene corridor --path dolly --frames 24 --size
+// 320x180 --techniques hiz --sweep hiz.denoise=false,true`, llvmpipe).
 TEST(Denoiser, TemporalHistoryBesideASilhouetteIsTheSurfacesOwn) {
   Scene s = floor_scene(0.4f);
   s.materials[1] = material({0.8f, 0.3f, 0.2f}, 1.0f, 0.0f, 0.0f);  // F0 0: the box does not reflect
@@ -318,7 +318,7 @@ TEST(Denoiser, TemporalHistoryBesideASilhouetteIsTheSurfacesOwn) {
   int n = 0;
   for (int f = 0; f < 8; ++f) {
     Camera c = s.cameras[0];
-    const glm::vec3 slide(0.08f * static_cast<float>(f), 0.0f, 0.0f);  // about 2 pixels a frame at the box
+    const glm::vec3 slide(0.08f * static_cast<float>(f), 0.0f, 0.0f);  // about a pixel a frame at the box
     c.position += slide;
     c.target += slide;
     r.render(FrameRequest(c, {f, f / 30.0f}), probe, ViewMode::Final, nullptr);
