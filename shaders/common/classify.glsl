@@ -11,8 +11,9 @@ uint pixel_class(ivec2 p, out float roughness) {
 }
 
 // Classifies the pixels trace texel t stands for and writes their classes (or, for a tracer's
-// own list, the outputs of the pixels without work); `traces`: one of them traces this frame,
-// `listed`: the texel goes into the ray list.
+// own list, the outputs of the pixels without work); `traces`: one of them traces this frame (a
+// reflection, or with list_glass a refraction: the tile list holds its tile), `listed`: the
+// texel goes into the ray list.
 void classify_texel(ivec2 t, out bool traces, out bool listed) {
   traces = false;
   listed = false;
@@ -35,6 +36,7 @@ void classify_texel(ivec2 t, out bool traces, out bool listed) {
         if (own) traces = true; else c = CLASS_REUSED;
       }
       bool glass = params.list_glass != 0 && texelFetch(glass_surface_tex, p, 0).w >= 1.0;
+      if (glass) traces = true;
       bool pixel_listed = c == CLASS_TRACED || glass;
       listed = listed || pixel_listed;
 #ifdef CLASSIFY_FOR_TRACER

@@ -18,9 +18,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = TEX_LIT) uniform sampler2D lit_tex;
 layout(binding = IMG_OUT, rgba16f) uniform writeonly image2D out_reflection;
 layout(binding = IMG_OUT2, rgba16f) uniform writeonly image2D out_debug;  // steps, hit share, distance
-layout(binding = IMG_REFRACTION, rgba16f) uniform writeonly image2D out_refraction;
-layout(binding = TEX_GLASS_DEPTH) uniform sampler2D g_glass_depth;
-layout(binding = TEX_GLASS_SURFACE) uniform sampler2D g_glass_surface;
+#include "common/refraction.glsl"
 #include "common/telemetry.glsl"
 // Outside the #ifdef: an include expands once, before the preprocessor runs.
 #include "shared/classification.h"
@@ -34,19 +32,12 @@ layout(std430, binding = SSBO_RAYS) readonly buffer Rays {
 #include "common/denoise_common.glsl"
 #endif
 
-// Refraction (2012 blog): a transparent surface in front of this pixel refracts the view ray
-// with refract() instead of reflect() and traces it against the opaque depth buffer, which
-// holds what lies behind the glass. One ray, a single interface (thin-surface model).
-// Returns the ray's iterations (0 without a transparent surface).
+// The refraction of the pixel behind glass (common/refraction.glsl), zero elsewhere. Returns
+// the ray's iterations (0 without a transparent surface).
 float trace_refraction(ivec2 p) {
-  vec4 surface = texelFetch(g_glass_surface, p, 0);
-  if (surface.w < 1.0) { imageStore(out_refraction, p, vec4(0.0)); return 0.0; }
-  vec3 pos = view_position(pixel_to_uv(p), texelFetch(g_glass_depth, p, 0).r);
-  vec3 n = normalize(surface.xyz);
-  vec3 d = normalize(pos);
-  vec3 dir = refract(d, n, 1.0 / surface.w);
-  if (dot(dir, dir) < 1e-6) dir = reflect(d, n);  // total internal reflection
-  TraceResult t = trace_ray(p, pos, normalize(dir), pixel_jitter(p, 0, params.ray.seed));
+  vec3 origin, dir;
+  if (!refraction_ray(p, origin, dir)) { imageStore(out_refraction, p, vec4(0.0)); return 0.0; }
+  TraceResult t = trace_ray(p, origin, dir, pixel_jitter(p, 0, params.ray.seed));
   imageStore(out_refraction, p, t.hit ? vec4(textureLod(lit_tex, t.uv, 0.0).rgb, 1.0) : vec4(0.0));
   telemetry_ray(t.steps);
   return t.steps;

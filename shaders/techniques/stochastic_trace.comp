@@ -4,9 +4,13 @@
 // radiance (rgb * confidence, confidence) and the hit vector (view space, hit - origin; a miss
 // stores the direction * RAY_MISS_LENGTH) with the sample's pdf: what the denoiser's ratio
 // estimator needs. Texels that do not trace this frame are not written (the denoiser reads
-// the class texture).
+// the class texture). Compiled with STOCHASTIC_REFRACTION (scenes with glass), pixels behind
+// glass refract as the tracers' do (common/refraction.glsl): one exact ray each, at full
+// resolution, not denoised; the classification lists their tiles and writes the refraction's
+// zeros outside the listed pixels, the trace every pixel of its tiles.
 #include "common/ssr_common.glsl"
 #include "common/hiz_trace.glsl"
+#include "common/refraction.glsl"
 #include "common/blue_noise.glsl"
 #include "common/denoise_common.glsl"
 #include "common/telemetry.glsl"
@@ -67,7 +71,27 @@ void main() {
     iterations = r.steps;
     telemetry_ray(r.steps);
   }
-  telemetry_lanes(p, traces, iterations);
+  bool refracts = false;
+#ifdef STOCHASTIC_REFRACTION
+  // The refraction of every pixel this texel stands for (its 2x2 block at half resolution).
+  for (int y = 0; y < d; ++y)
+    for (int x = 0; x < d; ++x) {
+      ivec2 q = t * d + ivec2(x, y);
+      if (any(greaterThanEqual(q, ivec2(frame.viewport.xy)))) continue;
+      vec3 origin, dir;
+      vec4 refraction = vec4(0.0);
+      if (refraction_ray(q, origin, dir)) {
+        TraceResult r = hiz_trace(origin, dir, HizTrace(params.max_distance, params.max_iterations, 0,
+                                                        params.max_level, params.thickness, false, 0u));
+        if (r.hit) refraction = vec4(textureLod(lit_tex, r.uv, 0.0).rgb, 1.0);
+        iterations += r.steps;
+        refracts = true;
+        telemetry_ray(r.steps);
+      }
+      imageStore(out_refraction, q, refraction);
+    }
+#endif
+  telemetry_lanes(p, traces || refracts, iterations);
   barrier();
   if (gl_LocalInvocationIndex == 0u && group_rays > 0u) atomicAdd(header.rays, group_rays);
 }

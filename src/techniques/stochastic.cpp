@@ -4,7 +4,7 @@
 //              half resolution), and the list of tiles the trace runs on (indirect dispatch);
 //   trace      shaders/techniques/stochastic_trace.comp: one GGX VNDF ray per traced pixel from
 //              the spatio-temporal blue noise (core/blue_noise.h), GGX bias, Hi-Z; radiance,
-//              hit vector, pdf;
+//              hit vector, pdf; and the refraction of pixels behind glass, as the tracers';
 //   spatial, temporal, bilateral   the denoiser (techniques/denoiser.h).
 // Pixels rougher than the threshold get the composite's environment (confidence 0).
 #include <algorithm>
@@ -12,6 +12,7 @@
 
 #include "core/blue_noise.h"
 #include "render/classification.h"
+#include "render/gpu_scene.h"
 #include "shared/stochastic.h"
 #include "techniques/denoiser.h"
 #include "techniques/stochastic.h"
@@ -65,9 +66,11 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   void load(const gl::ShaderSource& src) override {
     auto trace = gl::Program::compute(src, "techniques/stochastic_trace.comp");
+    auto trace_refraction = gl::Program::compute(src, "techniques/stochastic_trace.comp", {"STOCHASTIC_REFRACTION"});
     classifier_.load(src);
     denoiser_.load(src);
     trace_ = std::move(trace);
+    trace_refraction_ = std::move(trace_refraction);
     if (!blue_noise_) {
       const BlueNoise& bn = default_blue_noise();
       blue_noise_ = gl::Texture2D("stochastic blue noise", GL_R8, bn.size, bn.size * bn.slices);
@@ -79,7 +82,8 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   TechniqueDecl declare() const override {
     TechniqueDecl d;
-    d.reads = kReadGBuffer | kReadLit | kReadHiz | kReadMotion | kReadPrevDepth | kReadPrevNormal;
+    d.reads = kReadGBuffer | kReadLit | kReadGlass | kReadHiz | kReadMotion | kReadPrevDepth | kReadPrevNormal;
+    d.writes_refraction = true;  // pixels behind glass refract, as the tracers' do (run())
     if (params_.previous_frame) d.reads |= kReadPrevColor;
     d.textures = Denoiser::textures(divisor());
     d.stage_views = denoiser_.stage_views(0, params_.denoise);
@@ -97,11 +101,15 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     if (p.max_iterations == 0) p.max_iterations = autos.hiz_iterations();
     p.glossy_iterations = p.glossy_iterations == 0 ? p.max_iterations : std::min(p.glossy_iterations, p.max_iterations);
     const auto tex = std::span<gl::Texture2D* const>(in.textures);
+    // Pixels behind glass refract (as the tracers' do). Only glass pixels read the refraction
+    // image, so a scene without glass runs the trace without that code.
+    const bool glass = in.gpu_scene.has_transparent();
     const shared::ClassifyParams c{.roughness_threshold = p.roughness_threshold,
                                    .quad_roughness = p.quad_roughness,
                                    .rays_per_quad = 1 << p.rays_per_quad,  // the choice 0, 1, 2 is 1, 2, 4 rays
                                    .divisor = divisor(),
                                    .trace_size = {},
+                                   .list_glass = glass ? 1 : 0,  // their tiles are listed: the trace refracts
                                    .list_rays = 0};  // the trace runs over the tile list
     classifier_.classify(*tex[Denoiser::kClass], c, in.time.index, in.timer);
     {
@@ -111,7 +119,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
       glBindTextureUnit(TEX_BLUE_NOISE, blue_noise_.id());
       glBindImageTexture(IMG_OUT, tex[Denoiser::kTraceRadiance]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
       glBindImageTexture(IMG_OUT2, tex[Denoiser::kTraceRay]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-      glUseProgram(trace_.id());
+      glUseProgram((glass ? trace_refraction_ : trace_).id());
       classifier_.dispatch();
       glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     }
@@ -129,7 +137,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   TileClassifier classifier_;
   Denoiser denoiser_;
-  gl::Program trace_;
+  gl::Program trace_, trace_refraction_;
   gl::Texture2D blue_noise_;
 };
 

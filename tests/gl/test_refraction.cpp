@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 #include "techniques/technique.h"
 #include "registry/registry.h"
+#include "techniques/assignments.h"
 
 using namespace ssr;
 
@@ -89,6 +90,43 @@ TEST(Refraction, UnwrittenOutputsAreCleared) {
     }
     EXPECT_GT(compared, static_cast<std::size_t>(w * h / 2)) << info.name;
     EXPECT_EQ(differ, 0u) << info.name << ": the composite differs from none's where it may not";
+  }
+  test::expect_no_gl_errors();
+}
+
+// `stochastic` refracts the pixels behind glass as `hiz` does (the same Hi-Z trace of the same
+// exact ray: it lists the glass pixels' tiles and refracts every pixel of its tiles), at full
+// resolution also when it traces its reflections at half. Without it, glass showed the unbent
+// background: 13.7 dB on the glass scene against hiz's 23.5 (`ssrlab compare --scene glass
+// --techniques hiz,stochastic --size 480x270`, llvmpipe).
+TEST(Refraction, StochasticRefractsAsHizDoes) {
+  const Scene scene = make_builtin_scene("glass");
+  const int w = 161, h = 91;  // odd: the half-resolution grid's last texels cover one pixel
+  Renderer r(scene, w, h);
+  auto hiz = create_technique("hiz");
+  hiz->load(r.shaders());
+  r.render(scene.cameras[0], *hiz, ViewMode::Final, nullptr);
+  const RgbaImageF want = r.read_texture(r.refraction());
+  const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
+  for (const char* half : {"false", "true"}) {
+    auto st = create_technique("stochastic");
+    apply_assignments(*st, {std::string("stochastic.half_resolution=") + half});
+    st->load(r.shaders());
+    EXPECT_TRUE(st->declare().writes_refraction);
+    r.render(scene.cameras[0], *st, ViewMode::Final, nullptr);
+    const RgbaImageF got = r.read_texture(r.refraction());
+    std::size_t glass_px = 0, hits = 0;
+    double worst = 0;
+    for (std::size_t p = 0; p < static_cast<std::size_t>(w) * h; ++p) {
+      glass_px += glass.pixels[p * 4 + 3] >= 1.0f;
+      hits += got.pixels[p * 4 + 3] > 0.5f;
+      for (std::size_t c = 0; c < 4; ++c)
+        worst = std::max(worst, double(std::abs(got.pixels[p * 4 + c] - want.pixels[p * 4 + c])));
+    }
+    ASSERT_GT(glass_px, 1000u);
+    EXPECT_GT(hits, glass_px * 8 / 10) << "half_resolution=" << half;
+    // The same rays through the same trace: equal bit for bit (measured 0 at both settings).
+    EXPECT_EQ(worst, 0.0) << "half_resolution=" << half;
   }
   test::expect_no_gl_errors();
 }
