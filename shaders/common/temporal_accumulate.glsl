@@ -29,7 +29,12 @@ bool same_surface(vec2 uv, GSample g, float expected_depth) {
 // radiance, its confidence and the frame count towards 0 along every edge that moved (corridor's
 // disoccluded floor next to its pillars). False when none of the four held one.
 bool history_at(vec2 uv, out vec4 radiance, out vec2 stats) {
-  vec4 frames = textureGather(history_stats, uv, 1);  // texels (0,1) (1,1) (1,0) (0,0)
+  vec2 st = uv * frame.viewport.xy - 0.5;
+  ivec2 base = ivec2(floor(st));
+  vec2 f = st - vec2(base);
+  // Gathered at the four texels' shared corner, so it reads exactly the block the weights are
+  // for (at uv itself, the hardware's sub-texel rounding may pick the next block near a centre).
+  vec4 frames = textureGather(history_stats, (vec2(base) + 1.0) * frame.viewport.zw, 1);  // (0,1) (1,1) (1,0) (0,0)
   bvec4 held = greaterThanEqual(frames, vec4(1.0));
   if (all(held)) {  // inside a surface: the sampler's bilinear fetch
     radiance = textureLod(history_tex, uv, 0.0);
@@ -38,9 +43,6 @@ bool history_at(vec2 uv, out vec4 radiance, out vec2 stats) {
   }
   radiance = vec4(0.0);
   stats = vec2(0.0);
-  vec2 st = uv * frame.viewport.xy - 0.5;
-  ivec2 base = ivec2(floor(st));
-  vec2 f = st - vec2(base);
   vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y)) * vec4(held);
   float total = w.x + w.y + w.z + w.w;
   if (!(total > 0.0)) return false;

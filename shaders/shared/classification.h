@@ -20,7 +20,7 @@ struct ClassifyParams {
   int rays_per_quad;          // 1, 2 or 4: rays per 2x2 quad above quad_roughness
   int divisor;                // 1: a trace texel per pixel; 2: per 2x2 block (half resolution)
   ivec4 trace_size;           // xy: the trace grid's size; zw: this frame's pixel of a 2x2 block
-  int list_glass SSR_DEFAULT(0);  // 1: pixels behind a transparent surface join the ray list (they refract)
+  int list_glass SSR_DEFAULT(0);  // 1: pixels behind a transparent surface join the lists (they refract)
   int list_rays SSR_DEFAULT(1);   // 1: the ray list is built too (a tracer's `compact`); 0: the tile list alone
   int pad1 SSR_DEFAULT(0);
   int pad2 SSR_DEFAULT(0);
@@ -48,7 +48,7 @@ struct TileListHeader {
   uint groups_x;  // tiles listed (the dispatch's x); y and z stay 1
   uint groups_y;
   uint groups_z;
-  uint rays;      // rays the trace cast (it counts them)
+  uint rays;      // reflection rays the trace cast (it counts them; refraction rays not)
 };
 
 // The ray list: an indirect dispatch's arguments (RAY_LIST_GROUP lanes a group), then one

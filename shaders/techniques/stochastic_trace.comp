@@ -91,7 +91,9 @@ void main() {
       imageStore(out_refraction, q, refraction);
     }
 #endif
-  telemetry_lanes(p, traces || refracts, iterations);
+  // At half resolution an odd size's last blocks may have this frame's pixel outside the image
+  // while refracting inside it: the lane reports at its block's pixel in the image.
+  telemetry_lanes(min(p, ivec2(frame.viewport.xy) - 1), traces || refracts, iterations);
   barrier();
   if (gl_LocalInvocationIndex == 0u && group_rays > 0u) atomicAdd(header.rays, group_rays);
 }

@@ -129,7 +129,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   void reset() override { denoiser_.reset(); }
 
-  // Tiles listed and rays cast by the last frame (stalls): tests and the speed report.
+  // Tiles listed and reflection rays cast by the last frame (stalls): the tests read them.
   shared::TileListHeader last_counts() const { return classifier_.read_header(); }
 
  private:
