@@ -272,7 +272,12 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
   return compare_oracles(frame.labels(), planar.reflected, frame.truth_reflected(), eligible);
 }
 
-std::vector<bool> reflective_pixels(const Renderer& r) { return reflective_pixels(r.read_material(), r.read_depth()); }
+std::vector<bool> scored_pixels(const Renderer& r) {
+  std::vector<bool> out = reflective_pixels(r.read_material(), r.read_depth());
+  const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = out[i] || glass.pixels[i * 4 + 3] >= 1.0f;
+  return out;
+}
 
 std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth) {
   std::vector<bool> out(depth.size());

@@ -113,10 +113,11 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
 // pixels (ARCHITECTURE §5: the two oracles check each other).
 OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Score& planar);
 
-// The pixels that do reflection work in the renderer's current G-buffer (row 0 = top): the
-// pixels every pooled figure covers.
-std::vector<bool> reflective_pixels(const Renderer& r);
-// The same from read-back material (4 values a pixel) and depth.
+// The pixels every pooled figure covers in the renderer's current G-buffer (row 0 = top): those
+// that do reflection work and those behind glass, which show the technique's refraction (the
+// reference's classes, ErrorMetrics::reflective).
+std::vector<bool> scored_pixels(const Renderer& r);
+// The pixels that do reflection work, from read-back material (4 values a pixel) and depth.
 std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth);
 
 // The parameters of a technique as key -> text, in table order (for results).

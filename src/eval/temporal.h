@@ -20,7 +20,7 @@ struct TemporalFrame {
   int width = 0, height = 0;
   std::vector<glm::vec2> motion;       // pixels, GL convention (+y up)
   std::vector<std::uint32_t> object;   // mesh index + 1; 0 = background (sky)
-  std::vector<bool> reflective;        // the pixel does reflection work
+  std::vector<bool> reflective;        // the pixel is scored: reflection work, or behind glass (refraction)
 };
 
 // For each pixel of `now`: the index of the pixel it was in `before`, or -1 when it was off

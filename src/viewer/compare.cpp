@@ -261,17 +261,18 @@ void Viewer::render() {
     const std::string key = sides_[0].shown_key + "#" + sides_[1].shown_key + (truth ? "#" + sides_[2].shown_key : "");
     if (key != psnr_key_) {
       // The shared metric code over compare's pixels: the final image's display values on the
-      // reflective pixels of this frame's G-buffer (both sides ran on it: the key holds the frame).
+      // reflective and glass pixels of this frame's G-buffer (both sides ran on it: the key holds
+      // the frame).
       std::optional<double> p;
       psnr_truth_valid_ = false;
       if (view_ == VIEW_FINAL) {
         const float exposure = renderer_->settings.exposure;
         const RgbaImageF a = display_values(renderer_->read_texture(sides_[0].color), exposure);
-        const std::vector<bool> reflective = reflective_pixels(*renderer_);
-        p = psnr_where(a, display_values(renderer_->read_texture(sides_[1].color), exposure), reflective);
+        const std::vector<bool> scored = scored_pixels(*renderer_);
+        p = psnr_where(a, display_values(renderer_->read_texture(sides_[1].color), exposure), scored);
         if (truth) {
           const std::optional<double> t =
-              psnr_where(a, display_values(renderer_->read_texture(sides_[2].color), exposure), reflective);
+              psnr_where(a, display_values(renderer_->read_texture(sides_[2].color), exposure), scored);
           psnr_truth_valid_ = t.has_value();
           psnr_truth_ = t.value_or(0.0);
         }

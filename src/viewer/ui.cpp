@@ -348,7 +348,7 @@ void Viewer::side_panel(double dt) {
       if (psnr_ >= kPsnrCap) ImGui::Text("PSNR A vs B: identical");
       else ImGui::Text("PSNR A vs B: %.2f dB", psnr_);
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("final image, reflective pixels, display values: compare's 'PSNR' when B is the reference");
+        ImGui::SetTooltip("final image, reflective and glass pixels, display values: compare's 'PSNR' when B is the reference");
       if (truth_figure_shown()) {  // the grid's fourth cell
         if (psnr_truth_ >= kPsnrCap) ImGui::Text("PSNR A vs truth: identical");
         else ImGui::Text("PSNR A vs truth: %.2f dB", psnr_truth_);
@@ -359,7 +359,7 @@ void Viewer::side_panel(double dt) {
     } else if (view_ != VIEW_FINAL) {
       ImGui::TextDisabled("PSNR A vs B: in the final view only");
     } else {
-      ImGui::TextDisabled("PSNR A vs B: - (no reflective pixels)");
+      ImGui::TextDisabled("PSNR A vs B: - (no reflective or glass pixels)");
     }
   }
   ImGui::Separator();

@@ -56,7 +56,7 @@ TEST(Telemetry, MatchesTheDebugImageAndChangesNothing) {
     // The CPU's count from the debug image (rows read top first; the telemetry's GL order is
     // bottom first): the histogram, and the idle share of 32-lane warps (8x4 halves of the 8x8
     // work groups, lanes outside the image idle).
-    const std::vector<bool> reflective = reflective_pixels(r);
+    const std::vector<bool> traced = scored_pixels(r);  // gallery has no glass: the reflective pixels
     std::vector<std::uint32_t> hist(TELEMETRY_BINS, 0);
     std::uint64_t busy = 0, slots = 0;
     std::size_t word_mismatches = 0;
@@ -67,7 +67,7 @@ TEST(Telemetry, MatchesTheDebugImageAndChangesNothing) {
           for (int x = wx; x < std::min(wx + 8, kW); ++x) {
             const std::size_t top_row = static_cast<std::size_t>(kH - 1 - y) * kW + x;
             const auto n = static_cast<std::uint32_t>(plain.debug.pixels[top_row * 4]);
-            if (reflective[top_row]) ++hist[std::min<std::uint32_t>(n, TELEMETRY_BINS - 1)];
+            if (traced[top_row]) ++hist[std::min<std::uint32_t>(n, TELEMETRY_BINS - 1)];
             sum += n;
             top = std::max(top, n);
             const std::uint32_t word = inst.telemetry.pixels[static_cast<std::size_t>(y) * kW + x];
@@ -80,7 +80,7 @@ TEST(Telemetry, MatchesTheDebugImageAndChangesNothing) {
     EXPECT_TRUE(inst.telemetry.histogram == hist);
     const auto s = inst.telemetry.stats();
     ASSERT_TRUE(s.has_value());
-    EXPECT_EQ(s->rays, static_cast<std::uint64_t>(std::count(reflective.begin(), reflective.end(), true)));
+    EXPECT_EQ(s->rays, static_cast<std::uint64_t>(std::count(traced.begin(), traced.end(), true)));
     ASSERT_TRUE(s->idle_lanes.has_value());
     EXPECT_DOUBLE_EQ(*s->idle_lanes, 1.0 - double(busy) / double(slots));
     EXPECT_GT(s->mean, 1.0);
