@@ -14,19 +14,28 @@
 
 using namespace ssr;
 
+namespace {
+// A technique by name with `assignments` applied, loaded for `r`, rendered once at the scene's
+// first camera.
+std::unique_ptr<Technique> render_with(Renderer& r, const Scene& scene, const char* name,
+                                       const std::vector<std::string>& assignments = {}) {
+  auto t = create_technique(name);
+  apply_assignments(*t, assignments);
+  t->load(r.shaders());
+  r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
+  return t;
+}
+}  // namespace
+
 TEST(Refraction, GlassBendsWhatLiesBehind) {
   const Scene scene = make_builtin_scene("glass");
   const int w = 240, h = 135;
   Renderer r(scene, w, h);
-  auto none = create_technique("none");
-  none->load(r.shaders());
-  r.render(scene.cameras[0], *none, ViewMode::Final, nullptr);
+  render_with(r, scene, "none");
   const RgbaImageF straight = r.read_texture(r.color());
   const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
   for (const char* name : {"linear", "linear-binary"}) {
-    auto t = create_technique(name);
-    t->load(r.shaders());
-    r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
+    render_with(r, scene, name);
     const RgbaImageF refr = r.read_texture(r.refraction());
     const RgbaImageF bent = r.read_texture(r.color());
     EXPECT_EQ(test::count_nonfinite(refr) + test::count_nonfinite(bent), 0u) << name;
@@ -67,17 +76,13 @@ TEST(Refraction, UnwrittenOutputsAreCleared) {
   const Scene scene = make_builtin_scene("glass");
   const int w = 160, h = 90;
   Renderer r(scene, w, h);
-  auto none = create_technique("none");
-  none->load(r.shaders());
-  r.render(scene.cameras[0], *none, ViewMode::Final, nullptr);
+  render_with(r, scene, "none");
   const RgbaImageF base = r.read_texture(r.color());
   const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
   const std::vector<std::uint16_t> material = r.read_material();
   for (const TechniqueInfo& info : technique_registry()) {
     if (info.name == "reference") continue;
-    auto tracer = create_technique("hiz");  // leaves a refraction image behind
-    tracer->load(r.shaders());
-    r.render(scene.cameras[0], *tracer, ViewMode::Final, nullptr);
+    render_with(r, scene, "hiz");  // leaves a refraction image behind
     auto t = info.create();
     t->load(r.shaders());
     r.render(scene.cameras[0], *t, ViewMode::Final, nullptr);
@@ -105,21 +110,16 @@ TEST(Refraction, StochasticRefractsAsHizDoes) {
   const Scene scene = make_builtin_scene("glass");
   const int w = 161, h = 91;  // odd: the half-resolution grid's last texels cover one pixel
   Renderer r(scene, w, h);
-  auto hiz = create_technique("hiz");
-  hiz->load(r.shaders());
-  r.render(scene.cameras[0], *hiz, ViewMode::Final, nullptr);
+  render_with(r, scene, "hiz");
   const RgbaImageF want = r.read_texture(r.refraction());
   const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
   for (const char* half : {"false", "true"}) {
-    auto st = create_technique("stochastic");
-    apply_assignments(*st, {std::string("stochastic.half_resolution=") + half});
-    st->load(r.shaders());
-    EXPECT_TRUE(st->declare().writes_refraction);
     // hiz's image is still there (a technique that writes refraction is not cleared after): a
     // value no trace writes, so every pixel stochastic leaves unwritten shows.
     const float poison[4] = {-1.0f, -1.0f, -1.0f, -1.0f};
     glClearTexImage(r.refraction().id(), 0, GL_RGBA, GL_FLOAT, poison);
-    r.render(scene.cameras[0], *st, ViewMode::Final, nullptr);
+    const auto st = render_with(r, scene, "stochastic", {std::string("stochastic.half_resolution=") + half});
+    EXPECT_TRUE(st->declare().writes_refraction);
     const RgbaImageF got = r.read_texture(r.refraction());
     std::size_t glass_px = 0, hits = 0;
     double worst = 0;
