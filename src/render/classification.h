@@ -3,8 +3,8 @@
 // (shared/classification.h: no reflection, environment only, traced this frame, reused from
 // neighbours) and appends every CLASSIFY_TILE^2 tile of the trace grid that holds a traced
 // texel (with list_glass, or a pixel behind glass: it refracts) to a list whose header is the
-// indirect dispatch's arguments: the trace then runs one
-// work group per listed tile (glDispatchComputeIndirect) and nothing elsewhere. It also lists
+// indirect dispatch's arguments: the trace then runs one work group per listed tile
+// (glDispatchComputeIndirect) and nothing elsewhere. It also lists
 // the tracing texels themselves (the ray list, FidelityFX's): a trace over it runs one lane per
 // ray, so pixels without work cost no lane at all, even where they share a tile with some.
 #pragma once
