@@ -273,9 +273,13 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
 }
 
 std::vector<bool> scored_pixels(const Renderer& r) {
-  std::vector<bool> out = reflective_pixels(r.read_material(), r.read_depth());
-  const RgbaImageF glass = r.read_texture(r.gbuffer().glass_surface);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = out[i] || glass.pixels[i * 4 + 3] >= 1.0f;
+  return scored_pixels(r.read_material(), r.read_depth(), r.read_texture(r.gbuffer().glass_surface));
+}
+
+std::vector<bool> scored_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth,
+                                const RgbaImageF& glass_surface) {
+  std::vector<bool> out = reflective_pixels(material, depth);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = out[i] || glass_surface.pixels[i * 4 + 3] >= 1.0f;
   return out;
 }
 

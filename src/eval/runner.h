@@ -117,6 +117,9 @@ OracleAgreement oracle_agreement(const ScoredFrame& frame, const ScoredFrame::Sc
 // that do reflection work and those behind glass, which show the technique's refraction (the
 // reference's classes, ErrorMetrics::reflective).
 std::vector<bool> scored_pixels(const Renderer& r);
+// The same from read-back material, depth and glass surfaces (RGBA, ior in w).
+std::vector<bool> scored_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth,
+                                const RgbaImageF& glass_surface);
 // The pixels that do reflection work, from read-back material (4 values a pixel) and depth.
 std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth);
 

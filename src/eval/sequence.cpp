@@ -38,7 +38,7 @@ TemporalFrame read_temporal(const Renderer& r) {
   const std::size_t n = depth.size();
   f.motion.resize(n);
   f.object.resize(n);
-  f.reflective = scored_pixels(r);
+  f.reflective = scored_pixels(material, depth, r.read_texture(r.gbuffer().glass_surface));
   for (std::size_t i = 0; i < n; ++i) {
     f.motion[i] = {motion.pixels[i * 4], motion.pixels[i * 4 + 1]};
     f.object[i] = depth[i] > 0.0f ? static_cast<std::uint32_t>(material[i * 4 + 3]) + 1u : 0u;
