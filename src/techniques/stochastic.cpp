@@ -66,11 +66,11 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   void load(const gl::ShaderSource& src) override {
     auto trace = gl::Program::compute(src, "techniques/stochastic_trace.comp");
-    auto trace_refraction = gl::Program::compute(src, "techniques/stochastic_trace.comp", {"STOCHASTIC_REFRACTION"});
     classifier_.load(src);
     denoiser_.load(src);
     trace_ = std::move(trace);
-    trace_refraction_ = std::move(trace_refraction);
+    src_ = src;
+    trace_refraction_ = gl::Program();  // on the first frame with glass (as the tracers' variants)
     if (!blue_noise_) {
       const BlueNoise& bn = default_blue_noise();
       blue_noise_ = gl::Texture2D("stochastic blue noise", GL_R8, bn.size, bn.size * bn.slices);
@@ -104,6 +104,8 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     // Pixels behind glass refract (as the tracers' do). Only glass pixels read the refraction
     // image, so a scene without glass runs the trace without that code.
     const bool glass = in.gpu_scene.has_transparent();
+    if (glass && !trace_refraction_)
+      trace_refraction_ = gl::Program::compute(src_, "techniques/stochastic_trace.comp", {"STOCHASTIC_REFRACTION"});
     const shared::ClassifyParams c{.roughness_threshold = p.roughness_threshold,
                                    .quad_roughness = p.quad_roughness,
                                    .rays_per_quad = 1 << p.rays_per_quad,  // the choice 0, 1, 2 is 1, 2, 4 rays
@@ -137,6 +139,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
 
   TileClassifier classifier_;
   Denoiser denoiser_;
+  gl::ShaderSource src_;
   gl::Program trace_, trace_refraction_;
   gl::Texture2D blue_noise_;
 };
