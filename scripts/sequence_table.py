@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Markdown tables of `ssrlab sequence` JSON files (docs/RESULTS.md, "Time").
 
-usage: sequence_table.py FILE.json...
+usage: sequence_table.py [--regions] FILE.json...
 One table per file: per technique the mean PSNR over truth frames, flicker (mean and p95 of the
-excess change beyond the truth's) and ghosting (PSNR on recently disoccluded pixels vs elsewhere).
+excess change beyond the truth's, and the technique's change over the truth's: "x truth") and
+ghosting (PSNR on recently disoccluded pixels vs elsewhere).
+--regions: the flicker mean per region instead (the summary's instability.regions), one column
+per region that holds pixels in the file.
 """
 import json
 import math
@@ -14,19 +17,46 @@ def fmt(v, f):
     return "–" if v is None or (isinstance(v, float) and not math.isfinite(v)) else f % v
 
 
-for name in sys.argv[1:]:
-    r = json.load(open(name))
+def header(r):
     cuts = [f["index"] for f in r["frames"] if f["cut"]]
-    print(f"**{r['scene']} / {r['path']}**: {len(r['frames'])} frames at {r['fps']:g} fps, "
-          f"{r['width']}x{r['height']}, truth every {r['truth_every']}"
-          + (f", cut at frame {', '.join(map(str, cuts))}" if cuts else "")
-          + f" ({r['device']['renderer']}, {r['revision']})\n")
-    print("| technique | mean PSNR | flicker mean | flicker p95 | disoccluded PSNR | elsewhere PSNR |")
-    print("|---|---:|---:|---:|---:|---:|")
+    return (f"**{r['scene']} / {r['path']}**: {len(r['frames'])} frames at {r['fps']:g} fps, "
+            f"{r['width']}x{r['height']}, truth every {r['truth_every']}"
+            + (f", cut at frame {', '.join(map(str, cuts))}" if cuts else "")
+            + f" ({r['device']['renderer']}, {r['revision']})\n")
+
+
+def summary_table(r):
+    print("| technique | mean PSNR | flicker mean | flicker p95 | x truth | disoccluded PSNR | elsewhere PSNR |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for s in r["summary"]:
         conv = [p for p in s["convergence"] if p is not None]
         mean = sum(conv) / len(conv) if conv else None
         g, i = s["ghosting"], s["instability"]
         print(f"| {s['label']} | {fmt(mean, '%.2f')} | {fmt(i['mean'], '%.4f')} | {fmt(i['p95'], '%.4f')} | "
+              f"{fmt(i.get('change_ratio'), '%.2f')} | "
               f"{fmt(g['disoccluded_psnr'], '%.2f')} | {fmt(g['elsewhere_psnr'], '%.2f')} |")
+
+
+# The classes of src/eval/breakdown.h, in the README's order; per-reflector regions are left out.
+REGIONS = ["all", "planar", "other", "mirror", "glossy", "rough", "refractive"]
+
+
+def region_table(r):
+    have = [k for k in REGIONS
+            if any((s["instability"].get("regions", {}).get(k) or {}).get("pixels") for s in r["summary"])]
+    if not have:
+        sys.exit(f"{r['scene']} / {r['path']}: no per-region flicker in this file (stripped JSON?)")
+    print("| technique | " + " | ".join(have) + " |")
+    print("|---|" + "---:|" * len(have))
+    for s in r["summary"]:
+        reg = s["instability"]["regions"]
+        print(f"| {s['label']} | " + " | ".join(fmt((reg.get(k) or {}).get("mean"), "%.4f") for k in have) + " |")
+
+
+args = sys.argv[1:]
+regions = "--regions" in args
+for name in [a for a in args if a != "--regions"]:
+    r = json.load(open(name))
+    print(header(r))
+    (region_table if regions else summary_table)(r)
     print()
