@@ -12,6 +12,8 @@ import json
 import math
 import sys
 
+from bench_table import REGION_COLUMNS  # the classes' column order, declared once
+
 
 def fmt(v, f):
     return "–" if v is None or (isinstance(v, float) and not math.isfinite(v)) else f % v
@@ -37,19 +39,15 @@ def summary_table(r):
               f"{fmt(g['disoccluded_psnr'], '%.2f')} | {fmt(g['elsewhere_psnr'], '%.2f')} |")
 
 
-# The classes of src/eval/breakdown.h, in the README's order; per-reflector regions are left out.
-REGIONS = ["all", "planar", "other", "mirror", "glossy", "rough", "refractive"]
-
-
 def region_table(r):
-    have = [k for k in REGIONS
+    have = [k for k in ["all"] + REGION_COLUMNS  # per-reflector regions left out
             if any((s["instability"].get("regions", {}).get(k) or {}).get("pixels") for s in r["summary"])]
     if not have:
         sys.exit(f"{r['scene']} / {r['path']}: no per-region flicker in this file (stripped JSON?)")
     print("| technique | " + " | ".join(have) + " |")
     print("|---|" + "---:|" * len(have))
     for s in r["summary"]:
-        reg = s["instability"]["regions"]
+        reg = s["instability"].get("regions", {})
         print(f"| {s['label']} | " + " | ".join(fmt((reg.get(k) or {}).get("mean"), "%.4f") for k in have) + " |")
 
 
