@@ -38,6 +38,10 @@ vec2 cell_exits(vec2 o, vec2 inv_d, ivec2 c, int level, ivec2 size) {
   return (mix(lo, hi, greaterThan(inv_d, vec2(0.0))) - o) * inv_d;
 }
 
+// `along` (0.01 pixel along the ray, per axis) on the axis the ray leaves its cell by, given the
+// cell's exits (both axes at a corner): where the next cell is looked up past the boundary.
+vec2 across_exit(vec2 exits, vec2 along) { return along * vec2(lessThanEqual(exits, exits.yx)); }
+
 // Is a ray point at reversed-Z depth `depth` more than `thickness` behind the farthest surface,
 // at depth `farthest` (never behind the background)? The view distance is B / (depth + A)
 // (frame.glsl), so without a division: B (farthest - depth) > thickness (depth + A)(farthest + A).
@@ -75,16 +79,15 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
   // both axes gave a ray running just inside a row the next row's pixel (its depth, its colour),
   // for as long as it ran within 0.01 pixel of the row's edge (glass 4K: 47.7 -> 43.9 dB).
   vec2 step_across = sign(dxy) * 0.01;
-  vec2 nudge = vec2(0.0);
 
   int top = clamp(h.max_level, 0, textureQueryLevels(hiz_tex) - 1);
   int level = clamp(h.start_level, 0, top);
   ivec2 size0 = textureSize(hiz_tex, 0);
   // Start one cell away, where the ray leaves the origin's pixel; no hit on the starting surface
   // (see the level-0 test).
-  vec2 exits = cell_exits(o.xy, inv_d, hiz_cell(o.xy, vec2(0.0), 0, size0), 0, size0);
-  float t = min(exits.x, exits.y) + cross_t;
-  nudge = step_across * vec2(lessThanEqual(exits, exits.yx));
+  vec2 start_exits = cell_exits(o.xy, inv_d, hiz_cell(o.xy, vec2(0.0), 0, size0), 0, size0);
+  float t = min(start_exits.x, start_exits.y) + cross_t;
+  vec2 nudge = across_exit(start_exits, step_across);
   bool was_in_front = false;
   int i = 0;
   for (; i < h.max_iterations; ++i) {
@@ -93,9 +96,9 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     // The mip chain halves with floor; textureSize with a per-lane lod is wrong on llvmpipe.
     ivec2 size = max(size0 >> level, ivec2(1));
     ivec2 c = hiz_cell(q, nudge, level, size);
-    exits = cell_exits(o.xy, inv_d, c, level, size);
+    vec2 exits = cell_exits(o.xy, inv_d, c, level, size);
     float t_exit = min(min(exits.x, exits.y), 1.0);
-    vec2 across = step_across * vec2(lessThanEqual(exits, exits.yx));  // the exit's axis (both at a corner)
+    vec2 across = across_exit(exits, step_across);
     vec2 bounds = texelFetch(hiz_tex, c, level).rg;
     float closest = bounds.x;
     float z_in = o.z + d.z * t, z_out = o.z + d.z * t_exit;
