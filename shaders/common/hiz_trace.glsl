@@ -23,10 +23,10 @@ struct HizTrace {
   uint own_reflector;  // the origin's planar reflector id (0: none), which it cannot hit
 };
 
-// The cell of `level` holding pixel-space point q + nudge. The last cell of a row/column also
-// covers an odd source's extra texel, hence the clamp (matches the pyramid's footprints).
-ivec2 hiz_cell(vec2 q, vec2 nudge, int level, ivec2 size) {
-  return clamp(ivec2(floor((q + nudge) / float(1 << level))), ivec2(0), size - 1);
+// The cell of `level` holding pixel-space point q. The last cell of a row/column also covers
+// an odd source's extra texel, hence the clamp (matches the pyramid's footprints).
+ivec2 hiz_cell(vec2 q, int level, ivec2 size) {
+  return clamp(ivec2(floor(q / float(1 << level))), ivec2(0), size - 1);
 }
 
 // Ray parameters where the ray o + t d (inv_d = 1 / d, no zero components) crosses cell c's
@@ -37,10 +37,6 @@ vec2 cell_exits(vec2 o, vec2 inv_d, ivec2 c, int level, ivec2 size) {
   vec2 hi = mix((vec2(c) + 1.0) * s, frame.viewport.xy, equal(c, size - 1));  // last cell: to the edge
   return (mix(lo, hi, greaterThan(inv_d, vec2(0.0))) - o) * inv_d;
 }
-
-// `along` (0.01 pixel along the ray, per axis) on the axis the ray leaves its cell by, given the
-// cell's exits (both axes at a corner): where the next cell is looked up past the boundary.
-vec2 across_exit(vec2 exits, vec2 along) { return along * vec2(lessThanEqual(exits, exits.yx)); }
 
 // Is a ray point at reversed-Z depth `depth` more than `thickness` behind the farthest surface,
 // at depth `farthest` (never behind the background)? The view distance is B / (depth + A)
@@ -71,23 +67,22 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
   vec2 inv_d = 1.0 / dxy;
   // Step this far past a cell boundary (0.01 pixel) so the next lookup lands in the next cell.
   float cross_t = 0.01 / max(abs(dxy.x), abs(dxy.y));
-  // And once the ray has left a cell, look the next one up 0.01 pixel past the boundary it
-  // crossed: a ray nearly parallel to one axis leaves a cell through the other axis' boundary
-  // by far less than a float can add to q there (at x = 632, 6e-5 pixel), so q stayed on the old
-  // side, the cell's exit came out at t again and the ray stalled until the iteration cap (the
-  // trace's tail: most of its time on corridor). Only across that boundary: looking ahead on
-  // both axes gave a ray running just inside a row the next row's pixel (its depth, its colour),
-  // for as long as it ran within 0.01 pixel of the row's edge (glass 4K: 47.7 -> 43.9 dB).
-  vec2 step_across = sign(dxy) * 0.01;
+  // That step can be less than a float can add to q on the other axis (a ray nearly parallel
+  // to one axis, leaving a cell through the other axis' boundary: at x = 632, 6e-5 pixel), so
+  // q stays on the old side and the lookup finds the cell the ray has left: its exit on that
+  // axis comes before t. The loop then takes the next cell on that axis (without it the ray
+  // stalled until the iteration cap: most of the trace's time on corridor). Looking cells up
+  // 0.01 pixel ahead instead gave a ray running just inside a row the next row's pixel (glass
+  // 4K: 47.7 -> 43.9 dB).
+  ivec2 step_cell = ivec2(sign(dxy));
 
   int top = clamp(h.max_level, 0, textureQueryLevels(hiz_tex) - 1);
   int level = clamp(h.start_level, 0, top);
   ivec2 size0 = textureSize(hiz_tex, 0);
   // Start one cell away, where the ray leaves the origin's pixel; no hit on the starting surface
   // (see the level-0 test).
-  vec2 start_exits = cell_exits(o.xy, inv_d, hiz_cell(o.xy, vec2(0.0), 0, size0), 0, size0);
+  vec2 start_exits = cell_exits(o.xy, inv_d, hiz_cell(o.xy, 0, size0), 0, size0);
   float t = min(start_exits.x, start_exits.y) + cross_t;
-  vec2 nudge = across_exit(start_exits, step_across);
   bool was_in_front = false;
   int i = 0;
   for (; i < h.max_iterations; ++i) {
@@ -95,17 +90,14 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
     if (t >= 1.0 || any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, res))) break;
     // The mip chain halves with floor; textureSize with a per-lane lod is wrong on llvmpipe.
     ivec2 size = max(size0 >> level, ivec2(1));
-    ivec2 c = hiz_cell(q, nudge, level, size);
+    ivec2 c = hiz_cell(q, level, size);
     vec2 exits = cell_exits(o.xy, inv_d, c, level, size);
-    // Never before t: near a corner the ray can cross the other axis' boundary within cross_t,
-    // by less than a float can add to q there, so the lookup still finds the cell it has left
-    // (its exit before t). Without the max, a ray moving towards the camera stepped back to that
-    // exit ("enters in front" below), descended, climbed back to the corner and did it again,
-    // until the iteration cap (H200: corridor 1080p 0.17 -> 0.34 ms, rays at the cap on
-    // gallery, corridor, cornell at 4K; not on llvmpipe). With it the skip moves past the corner
-    // on that axis (across_exit picks it).
-    float t_exit = min(max(min(exits.x, exits.y), t), 1.0);
-    vec2 across = across_exit(exits, step_across);
+    bvec2 left = lessThan(exits, vec2(t));  // the ray has left c on that axis (above)
+    if (any(left)) {
+      c = clamp(c + step_cell * ivec2(left), ivec2(0), size - 1);
+      exits = cell_exits(o.xy, inv_d, c, level, size);
+    }
+    float t_exit = min(min(exits.x, exits.y), 1.0);
     vec2 bounds = texelFetch(hiz_tex, c, level).rg;
     float closest = bounds.x;
     float z_in = o.z + d.z * t, z_out = o.z + d.z * t_exit;
@@ -113,7 +105,6 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
       // In front of everything in the cell: skip it, try a coarser cell next.
       was_in_front = true;
       t = t_exit + cross_t;
-      nudge = across;
       level = min(level + 1, top);
       continue;
     }
@@ -122,12 +113,10 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
       // nothing here can be hit before that point.
       was_in_front = true;
       t = min(t + (closest - z_in) / d.z, t_exit);
-      nudge = vec2(0.0);  // inside the cell now, on no boundary
     } else if (!backfaces && behind_by(max(z_in, z_out), bounds.y, h.thickness)) {
       // Behind everything in the cell by more than the thickness (the back-face mode's
       // thickness varies per pixel: it descends instead).
       t = t_exit + cross_t;
-      nudge = across;
       level = min(level + 1, top);
       continue;
     }
@@ -152,7 +141,6 @@ TraceResult hiz_trace(vec3 origin, vec3 dir, HizTrace h) {
       return TraceResult(true, uv, float(i + 1), length(view_position(uv, hit_depth) - origin));
     // Behind by more than the thickness (or on the starting surface): go on past this pixel.
     t = t_exit + cross_t;
-    nudge = across;
   }
   return trace_miss(float(i));
 }
