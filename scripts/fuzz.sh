@@ -42,12 +42,11 @@ run() {
   esac
   # libFuzzer prints a line per new input; keep the log and show its ending.
   local start=$SECONDS
+  echo "fuzz: $t ($mode)"
   if "$bin" "${args[@]}" "$corpus" "tests/fuzz/corpus/$t" >"$log" 2>&1; then
-    echo "fuzz: $t ($mode)"
-    grep -E '^(#[0-9]+\s+DONE|#[0-9]+: cov|stat::|INFO: fuzzed for|INFO: exiting|Done )' "$log" | tail -n 8
+    grep -E '^(#[0-9]+\s+DONE|#[0-9]+: cov|stat::|INFO: fuzzed for|INFO: exiting|Done )' "$log" | tail -n 8 || true
     echo "fuzz: $t passed in $((SECONDS - start)) s"
   else
-    echo "fuzz: $t ($mode)"
     tail -n 60 "$log"
     echo "fuzz: $t FOUND A PROBLEM (log: $log; reproducer in $build/artifacts/)" >&2
     return 1
@@ -67,10 +66,11 @@ mkdir -p "$build/artifacts"
 status=0
 if [ "$mode" = smoke ]; then
   # One process per target, side by side (CI has a core for each): the smoke run takes SECONDS,
-  # not SECONDS per target. Each prints when it is done, so the two reports do not interleave.
+  # not SECONDS per target. Their reports are shown one after the other once both are done.
   pids=()
-  for t in "${targets[@]}"; do run "$t" & pids+=($!); done
+  for t in "${targets[@]}"; do run "$t" > "$build/$t-smoke.report" 2>&1 & pids+=($!); done
   for p in "${pids[@]}"; do wait "$p" || status=1; done
+  for t in "${targets[@]}"; do cat "$build/$t-smoke.report"; done
 else
   # long: one target at a time, each already in WORKERS processes.
   for t in "${targets[@]}"; do run "$t" || status=1; done
