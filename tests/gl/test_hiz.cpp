@@ -114,9 +114,10 @@ TEST(Hiz, MatchesLinearBinaryWith500Steps) {
 // A refracted ray keeps its own pixel row. The stall fix (below) first looked every cell up 0.01
 // pixel ahead on both axes, so a ray running just inside a row's edge took the next row's pixel
 // (its depth and colour) for as long as it ran there: a whole row of the glass pane one row off
-// at 4K (H200: 47.70 -> 45.88 dB at 1080p, 47.69 -> 43.83 at 4K). Now the lookup crosses only
-// the boundary the ray left its cell by. Measured on llvmpipe, glass 960x540, refractive pixels
-// against the ideal: 37.28 dB, 43830 correct (as before the stall fix); both axes 36.96 dB, 43802.
+// at 4K (H200: 47.70 -> 45.88 dB at 1080p, 47.69 -> 43.83 at 4K). Now there is no lookahead: a
+// lookup that finds the cell the ray has already left takes the next cell on that axis
+// (hiz_trace.glsl). Measured on llvmpipe, glass 960x540, refractive pixels against the ideal:
+// 37.28 dB, 43830 correct (as before the stall fix); both axes 36.96 dB, 43802.
 TEST(Hiz, RefractedRaysKeepTheirRow) {
   const auto hiz = test::score_technique("glass", 960, 540, "hiz", {});
   const RegionFigures* g = hiz.breakdown.find("refractive");
