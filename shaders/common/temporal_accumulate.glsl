@@ -58,12 +58,13 @@ bool history_at(vec2 uv, out vec4 radiance, out vec2 stats) {
   return true;
 }
 
-// The 3x3 neighbourhood's mean and spread of the current image (clamped at the image's edges).
-void temporal_neighbourhood(ivec2 p, out vec4 mean, out vec4 sigma) {
+// The mean and spread of the current image's 3x3 texels around texel c (clamped at its edges).
+void temporal_neighbourhood(ivec2 c, out vec4 mean, out vec4 sigma) {
   vec4 m1 = vec4(0.0), m2 = vec4(0.0);
+  ivec2 last = textureSize(current_tex, 0) - 1;
   for (int y = -1; y <= 1; ++y)
     for (int x = -1; x <= 1; ++x) {
-      vec4 s = texelFetch(current_tex, clamp(p + ivec2(x, y), ivec2(0), ivec2(frame.viewport.xy) - 1), 0);
+      vec4 s = texelFetch(current_tex, clamp(c + ivec2(x, y), ivec2(0), last), 0);
       m1 += s;
       m2 += s * s;
     }
@@ -71,11 +72,10 @@ void temporal_neighbourhood(ivec2 p, out vec4 mean, out vec4 sigma) {
   sigma = sqrt(max(m2 / 9.0 - mean * mean, vec4(0.0)));
 }
 
-// This pixel's accumulated radiance (premultiplied) and its (variance, frames accumulated).
-void temporal_accumulate(ivec2 p, GSample g, vec4 current, vec2 stats, out vec4 result, out vec2 out_stats_value) {
-  vec4 mean, sigma;
-  temporal_neighbourhood(p, mean, sigma);
-
+// This pixel's accumulated radiance (premultiplied) and its (variance, frames accumulated), from
+// its current value and stats and its neighbourhood's mean and spread (temporal_neighbourhood).
+void temporal_accumulate(ivec2 p, GSample g, vec4 current, vec2 stats, vec4 mean, vec4 sigma, out vec4 result,
+                         out vec2 out_stats_value) {
   bool valid = frame.time.z > 0.5;
   vec3 world = view_to_world_pos(g.pos_vs);
   vec2 uv[2];

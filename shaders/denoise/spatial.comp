@@ -8,7 +8,9 @@
 // the stage off it is the upsample alone: the nearest rays that stand for this pixel. With
 // `firefly`, glossy pixels weigh each ray by 1 / (1 + luminance) too (Karis), less as their
 // history grows: cleaner first frames and less flicker (docs/RESULTS.md).
-// Writes premultiplied radiance and (luminance variance, mean hit length).
+// Writes premultiplied radiance and (luminance variance, mean hit length): per pixel, or with
+// pass.trace.w = 2 per trace texel, at this frame's traced pixel of its block (the temporal stage
+// then upsamples: a quarter of the invocations, Denoiser::spatial_divisor).
 #include "common/brdf.glsl"
 #include "common/gbuffer.glsl"
 #include "common/denoise_common.glsl"
@@ -86,12 +88,14 @@ vec2 vogel(int i, int n, float r, float angle) {
 }
 
 void main() {
-  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(p, ivec2(frame.viewport.xy)))) return;
-  uint c = pixel_class_at(class_tex, p);
+  ivec2 id = ivec2(gl_GlobalInvocationID.xy);  // the output texel
+  if (any(greaterThanEqual(id, imageSize(out_radiance)))) return;
+  ivec2 p = pass.trace.w == 2 ? id * 2 + pass.trace.yz : id;  // the pixel it is for
+  // Not reflective, not traced, or (the grid's last texels of an odd size) outside the image.
+  uint c = all(lessThan(p, ivec2(frame.viewport.xy))) ? pixel_class_at(class_tex, p) : CLASS_NONE;
   if (c != CLASS_TRACED && c != CLASS_REUSED) {
-    imageStore(out_radiance, p, vec4(0.0));
-    imageStore(out_stats, p, vec4(0.0));
+    imageStore(out_radiance, id, vec4(0.0));
+    imageStore(out_stats, id, vec4(0.0));
     return;
   }
   GSample g = gbuffer_fetch(p);
@@ -135,6 +139,6 @@ void main() {
   float mean = a.weight > 0.0 ? a.m1 / a.weight : 0.0;
   float variance = a.weight > 0.0 ? max(a.m2 / a.weight - mean * mean, 0.0) : 0.0;
   float ray_length = a.length_weight > 0.0 ? a.length / a.length_weight : 0.0;
-  imageStore(out_radiance, p, radiance);
-  imageStore(out_stats, p, vec4(variance, ray_length, 0.0, 0.0));
+  imageStore(out_radiance, id, radiance);
+  imageStore(out_stats, id, vec4(variance, ray_length, 0.0, 0.0));
 }

@@ -25,7 +25,10 @@ struct DenoiseParams {
 // What one denoiser stage reads besides its parameters (UBO_PASS).
 struct DenoisePass {
   DenoiseParams params;
-  ivec4 trace;  // x: trace divisor (1, 2); yz: this frame's traced pixel of each 2x2 block; w unused
+  // x: trace divisor (1, 2); yz: this frame's traced pixel of each 2x2 block; w: the spatial
+  // stage's divisor (2: it ran on the trace grid, one texel per block at its traced pixel, and
+  // the temporal stage upsamples; Denoiser::spatial_divisor).
+  ivec4 trace;
 };
 
 SSR_SHARED_END

@@ -54,13 +54,14 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
   return t;
 }
 
-std::vector<TextureDecl> Denoiser::textures(int trace_divisor) {
+std::vector<TextureDecl> Denoiser::textures(int trace_divisor, const shared::DenoiseParams& p) {
+  const int spatial = spatial_divisor(trace_divisor, p);
   return {
       {"classes", GL_R8, 1, false},
       {"trace radiance", GL_RGBA16F, trace_divisor, false},
       {"trace ray", GL_RGBA16F, trace_divisor, false},
-      {"spatial", GL_RGBA16F, 1, false},
-      {"spatial stats", GL_RG16F, 1, false},
+      {"spatial", GL_RGBA16F, spatial, false},
+      {"spatial stats", GL_RG16F, spatial, false},
       {"temporal A", GL_RGBA16F, 1, true},
       {"temporal stats A", GL_RG16F, 1, true},
       {"temporal B", GL_RGBA16F, 1, true},
@@ -107,7 +108,8 @@ constexpr GLbitfield kStageBarrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IM
 void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> tex, const shared::DenoiseParams& p,
                    int trace_divisor) {
   const auto& t = [&](Slot s) -> const gl::Texture2D& { return *tex[static_cast<std::size_t>(s)]; };
-  shared::DenoisePass pass{p, {trace_divisor, 0, 0, 0}};
+  const int spatial_div = spatial_divisor(trace_divisor, p);
+  shared::DenoisePass pass{p, {trace_divisor, 0, 0, spatial_div}};
   if (trace_divisor == 2) {
     const glm::ivec2 o = shared::quad_offset(frame.time.index);
     pass.trace.y = o.x;
@@ -128,7 +130,7 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
     gl::ScopedPass timed(frame.timer, p.spatial ? "spatial" : "upsample");
     bind_out(IMG_OUT, t(kSpatial));
     bind_out(IMG_OUT2, t(kSpatialStats));
-    spatial_.dispatch_2d(frame.width, frame.height);
+    spatial_.dispatch_2d((frame.width + spatial_div - 1) / spatial_div, (frame.height + spatial_div - 1) / spatial_div);
     glMemoryBarrier(kStageBarrier);
   }
   const gl::Texture2D* radiance = &t(kSpatial);

@@ -31,8 +31,8 @@ class Denoiser {
     kClass,          // R8 classes (render/classification.h), full resolution
     kTraceRadiance,  // RGBA16F premultiplied radiance, trace resolution
     kTraceRay,       // RGBA16F hit vector, pdf, trace resolution
-    kSpatial,        // RGBA16F premultiplied radiance after stage 1
-    kSpatialStats,   // RG16F variance, mean hit length
+    kSpatial,        // RGBA16F premultiplied radiance after stage 1 (spatial_divisor)
+    kSpatialStats,   // RG16F variance, mean hit length (spatial_divisor)
     // Stage 2's output and next frame's history, two pairs used in turn (persistent): a frame
     // reads one pair and writes the other, so nothing is copied.
     kTemporalA,      // RGBA16F premultiplied radiance after stage 2
@@ -41,7 +41,13 @@ class Denoiser {
     kTemporalStatsB,
     kSlotCount,
   };
-  static std::vector<TextureDecl> textures(int trace_divisor);
+  static std::vector<TextureDecl> textures(int trace_divisor, const shared::DenoiseParams& p);
+  // Where the spatial stage runs: on the trace grid (2) when the trace is at half resolution and
+  // the temporal stage is on (it upsamples: three passes on a quarter of the pixels would cost a
+  // full pass's floor each, docs/RESULTS.md), else at full resolution (1), where it upsamples.
+  static int spatial_divisor(int trace_divisor, const shared::DenoiseParams& p) {
+    return trace_divisor == 2 && p.temporal != 0 ? 2 : 1;
+  }
   // The stage views (classes, raw, ray length, spatial, and with the temporal stage temporal,
   // history; variance from the last stage) and the texture each shows in the frame that runs
   // next, offset by `first` (where the block starts in the technique's textures).

@@ -36,8 +36,9 @@ std::vector<ParamDesc> table() {
       SSR_PARAM_FLOAT(P, ggx_bias, 0.0, 1.0, 0.05, "",
                       "Pulls the GGX samples towards the lobe's centre: less noise, narrower (biased) reflections."),
       SSR_PARAM_BOOL(P, half_resolution,
-                     "Trace one pixel of each 2x2 block (rotating each frame); the spatial stage upsamples "
-                     "with depth-aware weights. The half grid rounds up: a 1-pixel-wide image traces its pixels."),
+                     "Trace one pixel of each 2x2 block (rotating each frame); the spatial stage runs on that "
+                     "grid and the temporal stage upsamples with depth-aware weights (temporal off: the spatial "
+                     "stage upsamples). The half grid rounds up: a 1-pixel-wide image traces its pixels."),
       SSR_PARAM_BOOL(P, previous_frame,
                      "Hits read the previous frame's final colour (reflections included): reflections of "
                      "reflections build up over frames."),
@@ -85,7 +86,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     d.reads = kReadGBuffer | kReadLit | kReadGlass | kReadHiz | kReadMotion | kReadPrevDepth | kReadPrevNormal;
     d.writes_refraction = true;  // pixels behind glass refract, as the tracers' do (run())
     if (params_.previous_frame) d.reads |= kReadPrevColor;
-    d.textures = Denoiser::textures(divisor());
+    d.textures = Denoiser::textures(divisor(), params_.denoise);
     d.stage_views = denoiser_.stage_views(0, params_.denoise);
     for (const StageView& v : d.stage_views) d.debug_views.push_back(v.view);
     d.debug_views.insert(d.debug_views.end(), {ViewMode::Iterations, ViewMode::IdleLanes});

@@ -123,7 +123,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
     if (this->params_.ray.denoise.enabled) {
       // Its second image holds the rays then: the stage views replace the step views.
       d.reads |= kReadMotion | kReadPrevDepth | kReadPrevNormal;
-      d.textures = Denoiser::textures(1);
+      d.textures = Denoiser::textures(1, this->params_.ray.denoise);
       d.varies_per_frame = true;  // new samples every frame, accumulated
       d.stage_views = denoiser_.stage_views(0, this->params_.ray.denoise);
       d.debug_views.clear();
