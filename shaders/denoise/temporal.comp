@@ -12,7 +12,8 @@
 // frame's value) and blended with weight
 // 1 / n (n = frames accumulated, at most `history`). Nothing valid: the history restarts.
 // At half resolution the spatial stage ran on the trace grid (pass.trace.w = 2): this stage
-// upsamples its output first (depth-aware), and takes the neighbourhood on that grid.
+// upsamples its output first (depth-aware), and takes the neighbourhood on that grid (3x3 texels
+// around the nearest: steadier than the 2x2 a pixel blends from, docs/RESULTS.md).
 // Writes premultiplied radiance and (variance, frames accumulated).
 #include "common/brdf.glsl"
 #include "common/gbuffer.glsl"
