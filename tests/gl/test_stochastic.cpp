@@ -139,6 +139,19 @@ float noise(int x, int y, int frame) {
 
 std::vector<bool> reflective(const Renderer& r) { return reflective_pixels(r.read_material(), r.read_depth()); }
 
+// Over the reflective pixels of the last frame's reflection: the largest distance of red and of
+// the confidence from 1 goes into `worst`, the pixels into `n` (tests fed a radiance of 1).
+void track_distance_from_one(const Renderer& r, double& worst, int& n) {
+  const RgbaImageF out = r.read_texture(r.reflection());
+  const std::vector<bool> mask = reflective(r);
+  for (int i = 0; i < kW * kH; ++i)
+    if (mask[static_cast<std::size_t>(i)]) {
+      const float* o = &out.pixels[static_cast<std::size_t>(i) * 4];
+      worst = std::max({worst, double(std::abs(o[0] - 1.0f)), double(std::abs(o[3] - 1.0f))});
+      ++n;
+    }
+}
+
 // The denoiser's spatial stage alone (then the resolve) on floor_scene(roughness).
 struct SpatialOnly {
   explicit SpatialOnly(float roughness) : s(floor_scene(roughness)), r(s, kW, kH) {
@@ -328,15 +341,7 @@ TEST(Denoiser, TemporalHistoryBesideASilhouetteIsTheSurfacesOwn) {
     c.position += slide;
     c.target += slide;
     r.render(FrameRequest(c, {f, f / 30.0f}), probe, ViewMode::Final, nullptr);
-    if (f < 2) continue;  // a history everywhere first
-    const RgbaImageF out = r.read_texture(r.reflection());
-    const std::vector<bool> mask = reflective(r);
-    for (int i = 0; i < kW * kH; ++i)
-      if (mask[static_cast<std::size_t>(i)]) {
-        const float* o = &out.pixels[static_cast<std::size_t>(i) * 4];
-        worst = std::max({worst, double(std::abs(o[0] - 1.0f)), double(std::abs(o[3] - 1.0f))});
-        ++n;
-      }
+    if (f >= 2) track_distance_from_one(r, worst, n);  // a history everywhere first
   }
   std::printf("worst |output - 1| over %d floor pixels: %.4f\n", n, worst);
   ASSERT_GT(n, kW * kH);
@@ -431,14 +436,7 @@ TEST(Denoiser, HalfResolutionKeepsAConstantInputOnEveryPixel) {
   int n = 0;
   for (int f = 0; f < 6; ++f) {
     r.render(FrameRequest(s.cameras[0], {f, f / 30.0f}), probe, ViewMode::Final, nullptr);
-    const RgbaImageF out = r.read_texture(r.reflection());
-    const std::vector<bool> mask = reflective(r);
-    for (int i = 0; i < kW * kH; ++i)
-      if (mask[static_cast<std::size_t>(i)]) {
-        const float* o = &out.pixels[static_cast<std::size_t>(i) * 4];
-        worst = std::max({worst, double(std::abs(o[0] - 1.0f)), double(std::abs(o[3] - 1.0f))});
-        ++n;
-      }
+    track_distance_from_one(r, worst, n);
   }
   std::printf("worst |output - 1| over %d pixel-frames: %.4f\n", n, worst);
   ASSERT_GT(n, kW * kH * 2);
