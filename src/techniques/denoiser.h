@@ -43,8 +43,8 @@ class Denoiser {
   };
   static std::vector<TextureDecl> textures(int trace_divisor, const shared::DenoiseParams& p);
   // Where the spatial stage runs: on the trace grid (2) when the trace is at half resolution and
-  // the temporal stage is on (it upsamples: three passes on a quarter of the pixels would cost a
-  // full pass's floor each, docs/RESULTS.md), else at full resolution (1), where it upsamples.
+  // the temporal stage is on, which then upsamples (a pass costs about its invocation count:
+  // docs/RESULTS.md, "each pass's floor"); else at full resolution (1), upsampling itself.
   static int spatial_divisor(int trace_divisor, const shared::DenoiseParams& p) {
     return trace_divisor == 2 && p.temporal != 0 ? 2 : 1;
   }
