@@ -9,6 +9,19 @@ const float RAY_MISS_LENGTH = 1000.0;
 
 uint pixel_class_at(sampler2D classes, ivec2 p) { return uint(texelFetch(classes, p, 0).r * CLASS_LEVELS + 0.5); }
 
+// Half resolution: the traced pixels form a grid (texel t at pixel 2t + offset, the same corner
+// of every 2x2 block). Pixel p lies between texels t0 + (0..1, 0..1): returns t0 (-1 at the top
+// and left edges: no texel there) and `b`, p's place between them (0 or 0.5 per axis).
+ivec2 half_grid_texel(ivec2 p, ivec2 offset, out vec2 b) {
+  vec2 f = vec2(p - offset) * 0.5;
+  ivec2 t0 = ivec2(floor(f));
+  b = f - vec2(t0);
+  return t0;
+}
+
+// The bilinear weight of texel t0 + (i, j) at `b` (half_grid_texel).
+float half_grid_weight(vec2 b, int i, int j) { return (i == 0 ? 1.0 - b.x : b.x) * (j == 0 ? 1.0 - b.y : b.y); }
+
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // GGX Smith G1 for direction w (n.w = n_w), alpha = roughness^2.

@@ -110,13 +110,12 @@ void main() {
     // Half resolution: the traced pixels form a grid (one per 2x2 block, the same corner in
     // every block), so a pixel between them takes the 2 or 4 around it, bilinearly, each
     // weighed by its geometric likeness too (a depth-aware bilinear upsample).
-    vec2 f = vec2(p - pass.trace.yz) * 0.5;
-    ivec2 t0 = ivec2(floor(f));
-    vec2 b = f - vec2(t0);  // 0 or 0.5 per axis
+    vec2 b;
+    ivec2 t0 = half_grid_texel(p, pass.trace.yz, b);
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
-        float k = (i == 0 ? 1.0 - b.x : b.x) * (j == 0 ? 1.0 - b.y : b.y);
-        ivec2 t = t0 + ivec2(i, j);  // -1 at the top and left edges: no texel (no negative division)
+        float k = half_grid_weight(b, i, j);
+        ivec2 t = t0 + ivec2(i, j);
         if (k > 0.0 && all(greaterThanEqual(t, ivec2(0)))) add_ray(a, g, v, t * 2 + pass.trace.yz, k, glossy, firefly);
       }
   } else {

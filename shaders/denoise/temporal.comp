@@ -60,15 +60,14 @@ void upsample(ivec2 p, GSample g, out vec4 radiance, out vec2 stats, out ivec2 n
   radiance = vec4(0.0);
   stats = vec2(0.0);
   float weight = 0.0;
-  vec2 f = vec2(p - pass.trace.yz) * 0.5;
-  ivec2 t0 = ivec2(floor(f));
-  vec2 b = f - vec2(t0);  // 0 or 0.5 per axis
-  nearest = clamp(ivec2(floor(f + 0.5)), ivec2(0), textureSize(current_tex, 0) - 1);
+  vec2 b;
+  ivec2 t0 = half_grid_texel(p, pass.trace.yz, b);
+  nearest = clamp(t0 + ivec2(greaterThan(b, vec2(0.0))), ivec2(0), textureSize(current_tex, 0) - 1);  // ties up
   uint c = pixel_class_at(class_tex, p);
   if (c != CLASS_TRACED && c != CLASS_REUSED) return;  // rougher than the threshold: no reflection traced
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i)
-      add_texel(radiance, stats, weight, g, t0 + ivec2(i, j), (i == 0 ? 1.0 - b.x : b.x) * (j == 0 ? 1.0 - b.y : b.y));
+      add_texel(radiance, stats, weight, g, t0 + ivec2(i, j), half_grid_weight(b, i, j));
   if (weight == 0.0)
     for (int y = -1; y <= 1; ++y)
       for (int x = -1; x <= 1; ++x) add_texel(radiance, stats, weight, g, nearest + ivec2(x, y), 0.5);

@@ -33,6 +33,11 @@ SSR_FN ivec2 quad_offset(int frame_index) {
   return ivec2(k == 1 || k == 2 ? 1 : 0, k == 1 || k == 3 ? 1 : 0);
 }
 
+// That offset for a trace grid of `divisor` (1, 2).
+SSR_FN ivec2 trace_offset(int divisor, int frame_index) {
+  return divisor == 2 ? quad_offset(frame_index) : ivec2(0);
+}
+
 // Is pixel p one of the quad's `rays` (1, 2, 4) traced pixels this frame? The choice rotates
 // with the frame so every pixel gets rays over four frames.
 SSR_FN bool quad_traces(ivec2 p, int frame_index, int rays) {

@@ -47,7 +47,7 @@ void main() {
   uint tile = tiles[gl_WorkGroupID.x];
   ivec2 t = ivec2(tile & 0xffffu, tile >> 16u) * CLASSIFY_TILE + ivec2(gl_LocalInvocationID.xy);
   int d = params.half_resolution != 0 ? 2 : 1;
-  ivec2 p = t * d + (d == 2 ? quad_offset(frame.counts.z) : ivec2(0));
+  ivec2 p = t * d + trace_offset(d, frame.counts.z);
   bool traces = all(lessThan(p, ivec2(frame.viewport.xy))) && pixel_class_at(class_tex, p) == CLASS_TRACED;
   float iterations = 0.0;
   if (traces) {

@@ -19,7 +19,7 @@ void TileClassifier::classify(const gl::Texture2D& classes, shared::ClassifyPara
                               gl::PassTimer* timer) {
   gl::ScopedPass pass(timer, "classify");
   const glm::ivec2 size = trace_size(classes.width(), classes.height(), p.divisor);
-  const glm::ivec2 offset = p.divisor == 2 ? shared::quad_offset(frame_index) : glm::ivec2(0);
+  const glm::ivec2 offset = shared::trace_offset(p.divisor, frame_index);
   p.trace_size = {size, offset};
   prepare(size, p);
   glBindImageTexture(IMG_OUT, classes.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);

@@ -109,12 +109,8 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
                    int trace_divisor) {
   const auto& t = [&](Slot s) -> const gl::Texture2D& { return *tex[static_cast<std::size_t>(s)]; };
   const int spatial_div = spatial_divisor(trace_divisor, p);
-  shared::DenoisePass pass{p, {trace_divisor, 0, 0, spatial_div}};
-  if (trace_divisor == 2) {
-    const glm::ivec2 o = shared::quad_offset(frame.time.index);
-    pass.trace.y = o.x;
-    pass.trace.z = o.y;
-  }
+  const glm::ivec2 o = shared::trace_offset(trace_divisor, frame.time.index);
+  const shared::DenoisePass pass{p, {trace_divisor, o.x, o.y, spatial_div}};
   if (!ubo_) ubo_ = gl::make_buffer("denoiser pass", sizeof(shared::DenoisePass));
   glNamedBufferSubData(ubo_.id(), 0, sizeof(pass), &pass);
   glBindBufferBase(GL_UNIFORM_BUFFER, UBO_PASS, ubo_.id());

@@ -81,7 +81,7 @@ class DenoiseProbe final : public TechniqueWithParams<shared::DenoiseParams> {
     normals.pixels.clear();  // this frame's G-buffer (the camera may move)
     // Trace texel t stands for pixel t * divisor + the frame's offset (the pixel that traced).
     const glm::ivec2 size = TileClassifier::trace_size(f.width, f.height, divisor);
-    const glm::ivec2 offset = divisor == 2 ? shared::quad_offset(f.time.index) : glm::ivec2(0);
+    const glm::ivec2 offset = shared::trace_offset(divisor, f.time.index);
     std::vector<float> rad(static_cast<std::size_t>(size.x) * size.y * 4), ray(rad.size());
     for (int ty = 0; ty < size.y; ++ty)
       for (int tx = 0; tx < size.x; ++tx) {
