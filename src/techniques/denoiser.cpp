@@ -126,7 +126,7 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
     gl::ScopedPass timed(frame.timer, p.spatial ? "spatial" : "upsample");
     bind_out(IMG_OUT, t(kSpatial));
     bind_out(IMG_OUT2, t(kSpatialStats));
-    spatial_.dispatch_2d((frame.width + spatial_div - 1) / spatial_div, (frame.height + spatial_div - 1) / spatial_div);
+    spatial_.dispatch_2d(t(kSpatial).width(), t(kSpatial).height());  // a texel each (textures(): spatial_divisor)
     glMemoryBarrier(kStageBarrier);
   }
   const gl::Texture2D* radiance = &t(kSpatial);
