@@ -46,15 +46,6 @@ struct BenchOptions {
   std::string shader_dir;  // empty: the embedded shaders
 };
 
-// "720p", "1080p", "1440p", "4k", "8k" or WIDTHxHEIGHT.
-std::pair<int, int> parse_named_size(const std::string& s) {
-  static const std::map<std::string, std::pair<int, int>> named = {
-      {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}},
-      {"4k", {3840, 2160}}, {"2160p", {3840, 2160}}, {"8k", {7680, 4320}}, {"4320p", {7680, 4320}}};
-  auto it = named.find(s);
-  return it != named.end() ? it->second : parse_size(s);
-}
-
 constexpr std::size_t kMaxListed = 64;  // scenes, and sizes, per bench
 
 std::string size_name(int w, int h) { return std::to_string(w) + "x" + std::to_string(h); }

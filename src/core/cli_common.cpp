@@ -1,6 +1,7 @@
 #include "core/cli_common.h"
 
 #include <filesystem>
+#include <map>
 #include <regex>
 
 #include "core/errors.h"
@@ -19,6 +20,14 @@ std::pair<int, int> parse_size(const std::string& text) {
                      " pixels, more than the " + std::to_string(kMaxFramePixels) +
                      " (8192x8192) supported.");
   return {w, h};
+}
+
+std::pair<int, int> parse_named_size(const std::string& text) {
+  static const std::map<std::string, std::pair<int, int>> named = {
+      {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}},
+      {"4k", {3840, 2160}}, {"2160p", {3840, 2160}}, {"8k", {7680, 4320}}, {"4320p", {7680, 4320}}};
+  const auto it = named.find(text);
+  return it != named.end() ? it->second : parse_size(text);
 }
 
 void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path) {
