@@ -109,7 +109,8 @@ int main(int argc, char** argv) {
   CLI::App app{"ssrlab: screen-space reflection laboratory (headless)"};
   app.require_subcommand(1);
   std::vector<Command> commands = {add_render_command(app), add_compare_command(app),
-                                   add_bench_command(app), add_sequence_command(app)};
+                                   add_bench_command(app), add_sequence_command(app),
+                                   add_passfloor_command(app)};
   CLI::App* scenes = app.add_subcommand("scenes", "List the built-in scenes and scene files.");
   bool scenes_md = false;
   scenes->add_flag("--markdown", scenes_md, "The README's scene table instead.");

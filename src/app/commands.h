@@ -26,5 +26,6 @@ Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_sequence_command(CLI::App& app);
+Command add_passfloor_command(CLI::App& app);
 
 }  // namespace ssr

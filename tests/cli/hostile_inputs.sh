@@ -106,6 +106,13 @@ bad variants bench --techniques linear --sweep linear.max_steps=$v --sweep linea
   --sweep linear.max_distance=$v --json "$out/b.json"
 bad scenes bench --scenes "$(printf 'gallery,%.0s' $(seq 1000))gallery" --json "$out/b.json"
 bad sizes bench --sizes "$(printf '64x36,%.0s' $(seq 1000))64x36" --json "$out/b.json"
+# passfloor: unknown modes and kinds, chains and frames out of range, sizes the GL cannot hold.
+bad "pass mode" passfloor --sizes 16x16 --modes cs8x8,cs7x7 --json "$out/p.json"
+bad "pass kind" passfloor --sizes 16x16 --kinds taps9x9 --json "$out/p.json"
+bad "chain length" passfloor --sizes 16x16 --chains 1,0 --json "$out/p.json"
+bad "chain length" passfloor --sizes 16x16 --chains 2.5 --json "$out/p.json"
+bad --frames passfloor --sizes 16x16 --frames 0 --json "$out/p.json"
+bad 40000x8 passfloor --sizes 40000x8 --json "$out/p.json"
 
 # ---- the verdict's options ---------------------------------------------------------------------
 bad "unknown region 'floor'" compare --regions planar,floor --size 32x18 --out "$out/x.png" --json "$out/r.json"
