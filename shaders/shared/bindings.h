@@ -56,6 +56,7 @@
 #define TEX_TRACE_RADIANCE 36   // denoiser input: the trace's radiance, confidence (trace resolution)
 #define TEX_TRACE_RAY 37        // denoiser input: hit vector (view space), pdf (trace resolution)
 #define TEX_STAGE_IN 38         // denoiser: the previous stage's radiance, confidence
+                                // (also borrowed by the pass-floor microbenchmark for its source, eval/pass_floor.h)
 #define TEX_STAGE_STATS 39      // denoiser: the previous stage's variance, ray length / history length
 #define TEX_HISTORY 40          // denoiser: last frame's accumulated radiance (persistent)
 #define TEX_HISTORY_STATS 41    // denoiser: last frame's variance, history length (persistent)

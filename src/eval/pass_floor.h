@@ -1,12 +1,13 @@
-// The pass-floor microbenchmark (`ssrlab-passfloor`, docs/RESULTS.md "What one screen pass
+// The pass-floor microbenchmark (`ssrlab passfloor`, docs/RESULTS.md "What one screen pass
 // costs"): what a full-screen pass costs by itself on a device, as a compute dispatch in
 // several work-group shapes or as a fragment pass, for kinds of pixel work from none to a 5x5
-// box of fetches, alone and in chains of dependent passes. It tells a pass's launch cost from
-// its work, which the techniques' own timings cannot.
+// box of fetches, alone and in chains of passes. It separates what a pass's launches cost from
+// what its work costs, which the techniques' own timings cannot.
 #pragma once
+#include <array>
+#include <map>
 #include <span>
 #include <string>
-#include <vector>
 
 #include "core/image.h"
 #include "gl/program.h"
@@ -18,8 +19,9 @@ namespace ssr {
 struct PassFloorMode {
   const char* name;
   int local_x, local_y;  // compute work-group size (0 for a fragment pass)
-  bool barrier;          // chained passes depend on each other (memory barrier between them);
-                         // false: each reads the source, none waits for another
+  bool dependent;        // each pass of a chain reads the one before (compute: a memory barrier
+                         // after each; fragment: GL orders a draw after the one that wrote its
+                         // texture); false: each reads the source and none waits for another
   const char* description;
 };
 // What each pixel does.
@@ -38,11 +40,13 @@ const PassFloorKind& pass_floor_kind(const std::string& name);
 class PassFloorBench {
  public:
   // RGBA16F source and two targets of w x h; the source holds pass_floor_source(). Needs a
-  // current GL 4.5 context.
+  // current GL 4.5 context. The bench leaves the context's bindings as it found them.
   PassFloorBench(const gl::ShaderSource& shaders, int width, int height);
-  // One pass of `kind` issued as `mode`, source -> target; returns the target in GL's row order
-  // (row 0 at the bottom, as pass_floor_source()).
-  RgbaImageF run_once(const PassFloorMode& mode, const PassFloorKind& kind);
+  // A chain of `passes` passes of `kind` issued as `mode` (the targets cleared first); returns
+  // the last pass's target, top row first.
+  RgbaImageF run_once(const PassFloorMode& mode, const PassFloorKind& kind, int passes = 1);
+  // The work-group size the compiled compute program has ({0, 0} for a fragment mode).
+  std::array<int, 2> group_size(const PassFloorMode& mode, const PassFloorKind& kind);
   // Median time of `chain` passes in a row, over `frames` frames after a warm-up (10 frames and
   // at least 0.3 s: the clock of an idle GPU is still low after a few). `clock` Gpu: GL
   // timestamps around the chain; Cpu: a wall clock around the chain and glFinish (llvmpipe).
@@ -50,19 +54,20 @@ class PassFloorBench {
                  gl::PassTimer::Clock clock);
 
  private:
+  class State;  // binds what the passes need and restores what it found
   void issue(const PassFloorMode& mode, const gl::Program& program, int index);
   const gl::Program& program(const PassFloorMode& mode, const PassFloorKind& kind);
 
   gl::ShaderSource shaders_;
   int width_, height_;
-  gl::Texture2D textures_[3];  // [0], [1]: chained passes ping-pong; [2]: the source
-  gl::Framebuffer fbos_[3];
+  gl::Texture2D textures_[3];  // [0], [1]: the targets, in turn in a chain; [2]: the source
+  gl::Framebuffer fbos_[2];    // the targets as colour attachments (fragment mode)
   gl::VertexArray vao_;
-  std::vector<std::pair<std::string, gl::Program>> cache_;
+  std::map<std::string, gl::Program> cache_;  // "mode/kind"
 };
 
-// The source's texel (x, y) (y = 0 the bottom row, as GL stores it): values a half float holds
-// exactly, different in every channel.
+// The source's texel (x, y), y = 0 the bottom row (as GL addresses it): values a half float
+// holds exactly, different in every channel.
 void pass_floor_source(int x, int y, float out[4]);
 
 }  // namespace ssr

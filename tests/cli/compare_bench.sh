@@ -14,6 +14,20 @@ trap 'rm -rf "$tmp"' EXIT
 # Shaders from a directory (another revision's, to time it): the JSON's revision says so.
 "$SSRLAB" bench --scenes gallery --sizes 32x18 --techniques linear --set reference.samples=4 --frames 1 --warmup 0 \
   --shaders "$(cd "$(dirname "$0")/../../shaders" && pwd)" --json "$tmp/bench_shaders.json" >/dev/null
+# passfloor: one row per size x mode x kind x chain, finite times, the legend of every mode and kind.
+"$SSRLAB" passfloor --sizes 16x16,24x8 --modes cs8x8,fs --kinds empty,copy --chains 1,3 --frames 2 \
+  --json "$tmp/passfloor.json" >/dev/null
+python3 - "$tmp/passfloor.json" <<'PY'
+import json, math, sys
+j = json.load(open(sys.argv[1]))
+assert set(j) >= {"device", "revision", "frames", "legend", "results"}, j.keys()
+assert j["device"]["clock"] in ("cpu", "gpu") and "chain of passes" in j["device"]["timing"], j["device"]
+assert len(j["results"]) == 2 * 2 * 2 * 2, len(j["results"])
+for r in j["results"]:
+    assert r["mode"] in j["legend"]["modes"] and r["kind"] in j["legend"]["kinds"], r
+    assert math.isfinite(r["ms"]) and r["ms"] > 0 and abs(r["ms_per_pass"] * r["chain"] - r["ms"]) < 1e-9, r
+assert {(r["size"], r["chain"]) for r in j["results"]} == {(s, c) for s in ("16x16", "24x8") for c in (1, 3)}
+PY
 
 python3 - "$tmp" <<'PY'
 import json, math, os, sys

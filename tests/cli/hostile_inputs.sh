@@ -113,6 +113,8 @@ bad "chain length" passfloor --sizes 16x16 --chains 1,0 --json "$out/p.json"
 bad "chain length" passfloor --sizes 16x16 --chains 2.5 --json "$out/p.json"
 bad --frames passfloor --sizes 16x16 --frames 0 --json "$out/p.json"
 bad 40000x8 passfloor --sizes 40000x8 --json "$out/p.json"
+bad "at most 16" passfloor --chains "$(printf '1,%.0s' $(seq 20))1" --json "$out/p.json"
+bad "chain length" passfloor --sizes 16x16 --chains +3 --json "$out/p.json"
 
 # ---- the verdict's options ---------------------------------------------------------------------
 bad "unknown region 'floor'" compare --regions planar,floor --size 32x18 --out "$out/x.png" --json "$out/r.json"
