@@ -40,7 +40,8 @@ const PassFloorKind& pass_floor_kind(const std::string& name);
 class PassFloorBench {
  public:
   // RGBA16F source and two targets of w x h; the source holds pass_floor_source(). Needs a
-  // current GL 4.5 context. The bench leaves the context's bindings as it found them.
+  // current GL 4.5 context. A run restores the viewport, framebuffer, vertex array, program and
+  // the tests it turns off; it leaves its texture and image units bound (every pass binds its own).
   PassFloorBench(const gl::ShaderSource& shaders, int width, int height);
   // A chain of `passes` passes of `kind` issued as `mode` (the targets cleared first); returns
   // the last pass's target, top row first.

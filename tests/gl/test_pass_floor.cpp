@@ -1,7 +1,7 @@
 // The pass-floor microbenchmark (eval/pass_floor.h, `ssrlab passfloor`) compares like with like:
 // every mode (compute group shapes, fragment) writes every pixel of every kind the same, chains
 // feed each pass the one before (or the source, when independent), the compute modes run the
-// group sizes they are named for, and the bench leaves the context's bindings as it found them.
+// group sizes they are named for, and a run restores the context state it changes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
