@@ -110,11 +110,8 @@ Command add_passfloor_command(CLI::App& app) {
       "passfloor", "Time what one full-screen pass costs by itself: compute group shapes and fragment passes, "
                    "from no work to a 5x5 box of fetches, alone and in chains.");
   c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or 720p, 1080p, 1440p, 4k, 8k.")->capture_default_str();
-  std::string mode_names, kind_names;
-  for (const PassFloorMode& m : pass_floor_modes()) mode_names += std::string(mode_names.empty() ? "" : ", ") + m.name;
-  for (const PassFloorKind& k : pass_floor_kinds()) kind_names += std::string(kind_names.empty() ? "" : ", ") + k.name;
-  c->add_option("--modes", o->modes, "Comma-separated: " + mode_names + " (or all).")->capture_default_str();
-  c->add_option("--kinds", o->kinds, "Comma-separated: " + kind_names + " (or all).")->capture_default_str();
+  c->add_option("--modes", o->modes, "Comma-separated: " + pass_floor_mode_names() + " (or all).")->capture_default_str();
+  c->add_option("--kinds", o->kinds, "Comma-separated: " + pass_floor_kind_names() + " (or all).")->capture_default_str();
   c->add_option("--chains", o->chains, "Comma-separated numbers of passes in a row per timed span (1-256).")
       ->capture_default_str();
   c->add_option("--frames", o->frames, "Timed frames per case (after 10 and at least 0.3 s of warm-up).")

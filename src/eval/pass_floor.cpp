@@ -1,10 +1,10 @@
 #include "eval/pass_floor.h"
 
-#include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include "core/errors.h"
+#include "eval/results.h"
+#include "eval/runner.h"
 #include "gl/readback.h"
 #include "shared/bindings.h"
 
@@ -30,13 +30,17 @@ constexpr PassFloorKind kKinds[] = {
 };
 
 template <class T>
-const T& named(std::span<const T> list, const std::string& name, const char* what) {
+std::string joined_names(std::span<const T> list) {
   std::string names;
-  for (const T& e : list) {
+  for (const T& e : list) names += (names.empty() ? "" : ", ") + std::string(e.name);
+  return names;
+}
+
+template <class T>
+const T& named(std::span<const T> list, const std::string& name, const char* what) {
+  for (const T& e : list)
     if (name == e.name) return e;
-    names += (names.empty() ? "" : ", ") + std::string(e.name);
-  }
-  throw InputError("unknown " + std::string(what) + " '" + name + "' (one of " + names + ").");
+  throw InputError("unknown " + std::string(what) + " '" + name + "' (one of " + joined_names(list) + ").");
 }
 
 constexpr GLbitfield kChainBarrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
@@ -79,6 +83,8 @@ std::span<const PassFloorMode> pass_floor_modes() { return kModes; }
 std::span<const PassFloorKind> pass_floor_kinds() { return kKinds; }
 const PassFloorMode& pass_floor_mode(const std::string& name) { return named(pass_floor_modes(), name, "pass mode"); }
 const PassFloorKind& pass_floor_kind(const std::string& name) { return named(pass_floor_kinds(), name, "pass kind"); }
+std::string pass_floor_mode_names() { return joined_names(pass_floor_modes()); }
+std::string pass_floor_kind_names() { return joined_names(pass_floor_kinds()); }
 
 void pass_floor_source(int x, int y, float out[4]) {
   out[0] = static_cast<float>(x % 64) / 64.0f;
@@ -174,16 +180,14 @@ double PassFloorBench::time_ms(const PassFloorMode& mode, const PassFloorKind& k
     timer.end();
     timer.end_frame();
   };
-  const auto start = std::chrono::steady_clock::now();
-  for (int f = 0; f < 10 || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(300); ++f) frame();
+  warm_up({10, frames, clock}, true, frame);
   timer.flush();
   timer.completed().clear();  // the warm-up's frames
   for (int f = 0; f < frames; ++f) frame();
   timer.flush();
   std::vector<double> ms;
   for (const gl::FrameTimes& frame : timer.completed()) ms.push_back(gl::outer_ms(frame));
-  std::sort(ms.begin(), ms.end());
-  return ms.empty() ? 0.0 : ms[ms.size() / 2];
+  return time_stats(std::move(ms)).median;
 }
 
 }  // namespace ssr

@@ -36,6 +36,9 @@ std::span<const PassFloorKind> pass_floor_kinds();
 // The entry named `name`; throws InputError naming the choices otherwise.
 const PassFloorMode& pass_floor_mode(const std::string& name);
 const PassFloorKind& pass_floor_kind(const std::string& name);
+// Every mode's (kind's) name, comma-separated, for help texts.
+std::string pass_floor_mode_names();
+std::string pass_floor_kind_names();
 
 class PassFloorBench {
  public:
@@ -48,9 +51,9 @@ class PassFloorBench {
   RgbaImageF run_once(const PassFloorMode& mode, const PassFloorKind& kind, int passes = 1);
   // The work-group size the compiled compute program has ({0, 0} for a fragment mode).
   std::array<int, 2> group_size(const PassFloorMode& mode, const PassFloorKind& kind);
-  // Median time of `chain` passes in a row, over `frames` frames after a warm-up (10 frames and
-  // at least 0.3 s: the clock of an idle GPU is still low after a few). `clock` Gpu: GL
-  // timestamps around the chain; Cpu: a wall clock around the chain and glFinish (llvmpipe).
+  // Median time of `chain` passes in a row, over `frames` frames after bench's warm-up (10
+  // frames, and on the GPU at least 0.3 s: runner.h warm_up). `clock` Gpu: GL timestamps around
+  // the chain; Cpu: a wall clock around the chain and glFinish (llvmpipe).
   double time_ms(const PassFloorMode& mode, const PassFloorKind& kind, int chain, int frames,
                  gl::PassTimer::Clock clock);
 

@@ -153,11 +153,9 @@ namespace {
 // first frames after: warm-up frames go on for at least this long (on the GPU clock only; the
 // H200 timed a floor pass 0.076 ms instead of 0.028 after 10 warm-up frames).
 constexpr double kGpuWarmupSeconds = 0.3;
+}  // namespace
 
-// Runs the warm-up: o.warmup calls of `frame`, and on the GPU clock, with `clock` set, more until
-// kGpuWarmupSeconds have passed.
-template <typename Frame>
-void warm_up(const TimingOptions& o, bool clock, Frame&& frame) {
+void warm_up(const TimingOptions& o, bool clock, const std::function<void()>& frame) {
   const auto start = std::chrono::steady_clock::now();
   const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   for (int f = 0; f < o.warmup; ++f) frame();
@@ -170,6 +168,7 @@ void warm_up(const TimingOptions& o, bool clock, Frame&& frame) {
   }
 }
 
+namespace {
 // Renders the warm-up (warm_clock: long enough for the GPU's clock), then o.frames timed frames
 // of a still camera, one after another from frame index `next` on (history carries, as in an
 // application; `next` is left at the index after the last); returns the timed frames' timings.

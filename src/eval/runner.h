@@ -1,5 +1,6 @@
 // Scoring and timing techniques on one frame: the engine of `ssrlab compare` and `ssrlab bench`.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -75,6 +76,10 @@ struct TimingOptions {
   int frames = 10;
   gl::PassTimer::Clock clock = gl::PassTimer::Clock::Gpu;
 };
+
+// Runs the warm-up: o.warmup calls of `frame`, and on the GPU clock, with `clock` set, more until
+// 0.3 s have passed (a GPU idle for a while runs at a low clock for the first frames after).
+void warm_up(const TimingOptions& o, bool clock, const std::function<void()>& frame);
 
 // The pass that Timing::passes names for the technique span's time outside its timed passes.
 inline constexpr const char* kBetweenPasses = "between passes";
