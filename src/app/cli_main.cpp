@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/docs.h"
+#include "core/cli_options.h"
 #include "core/errors.h"
 #include "scene/builtin_scenes.h"
 #include "registry/presets.h"
@@ -94,11 +95,17 @@ std::string parse_error_sentence(const CLI::App& app, int argc, char** argv,
   if (std::regex_match(what, m, conversion))
     return "option " + m[1].str() + " cannot take the value '" + m[2].str() +
            "' (wrong type, or out of range)";
-  if (std::regex_match(what, m, extras))
-    return "unknown option or unexpected argument '" + m[1].str() + "' (see ssrlab " +
+  if (std::regex_match(what, m, extras)) {
+    // The message lists them last first; the parse kept them in the order given.
+    std::string given;
+    for (const std::string& a : app.remaining(/*recurse=*/true)) given += (given.empty() ? "" : " ") + a;
+    return "unknown option or unexpected argument '" + (given.empty() ? m[1].str() : given) + "' (see ssrlab " +
            (app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name() + " ") +
            "--help)";
+  }
   if (std::regex_match(what, m, missing)) return "option " + m[1].str() + " needs a value";
+  static const std::regex empty(R"(^(\S+): needs a value, not an empty string$)");
+  if (std::regex_match(what, m, empty)) return "option " + m[1].str() + " needs a value, not an empty string";
   if (what == "A subcommand is required") return "a subcommand is required (one of " + known + ")";
   return what;
 }
@@ -124,6 +131,7 @@ int main(int argc, char** argv) {
   bool views_md = false;
   views->add_flag("--markdown", views_md, "The README's view table (the same table as Markdown).");
 
+  refuse_empty_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

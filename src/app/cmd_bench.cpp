@@ -17,6 +17,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "core/files.h"
 #include "core/revision.h"
 #include "registry/variants.h"
 #include "eval/results.h"
@@ -185,8 +186,7 @@ void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
 int run_bench(const BenchOptions& o) {
   if (o.json.empty() && o.csv.empty() && o.plot.empty())
     throw InputError("bench needs at least one of --json, --csv, --plot.");
-  require_output_files({{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}});
-  if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot must name a .svg file.");
+  if (!o.plot.empty() && files::lower_extension(o.plot) != ".svg") throw InputError("--plot must name a .svg file.");
   if (o.frames < 1 || o.frames > 10000) throw InputError("--frames must be in [1, 10000].");
   if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
   std::vector<std::pair<int, int>> sizes;
@@ -195,6 +195,7 @@ int run_bench(const BenchOptions& o) {
   if (!o.scenes.empty())
     for (const std::string& s : split_list(o.scenes, "scene")) scene_names.push_back(s);
   if (scene_names.empty()) scene_names.push_back("gallery");
+  require_output_files({{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}}, scene_names);
   // Every scene is loaded up front, and each size is a full run: bound both lists.
   for (const auto& [what, n] : {std::pair{"sizes", sizes.size()}, {"scenes", scene_names.size()}})
     if (n > kMaxListed)
@@ -235,7 +236,7 @@ int run_bench(const BenchOptions& o) {
       }
       plan("resolution", plot_plan.path(PlotKind::Resolution, scene));
     }
-    require_output_files(outputs);
+    require_output_files(outputs, scene_names);
   }
 
   auto ctx = open_gl(o.gl, sizes);

@@ -50,7 +50,7 @@ std::string fmt(const char* f, double v) {
 int run_compare(const CompareOptions& o) {
   const auto [w, h] = parse_size(o.size);
   if (image_format_for(o.out) != ImageFormat::Png) throw InputError("the grid is written as a .png.");
-  require_output_files({{"--out", o.out}, {"--json", o.json}});
+  require_output_files({{"--out", o.out}, {"--json", o.json}}, {o.scene});
   if (o.frames < 1 || o.frames > 1000) throw InputError("--frames must be in [1, 1000].");
   Scene scene = load_scene(o.scene);
   std::vector<std::string> regions;

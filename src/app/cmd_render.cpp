@@ -87,7 +87,7 @@ int run_render(const RenderOptions& o) {
   // Validate every input before any GL work or file is touched.
   const auto [w, h] = parse_size(o.size);
   const ImageFormat format = image_format_for(o.out);
-  require_output_files({{"--out", o.out}});
+  require_output_files({{"--out", o.out}}, {o.scene});
   const RenderOnlyView own_view = render_only_view(o.view);
   const bool classes_view = own_view == RenderOnlyView::Classes;  // the reference's own classes
   const bool diff_view = own_view == RenderOnlyView::Difference;  // the compare grid's bottom row

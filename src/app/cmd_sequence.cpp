@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "core/files.h"
 #include "core/revision.h"
 #include "registry/variants.h"
 #include "eval/grid.h"
@@ -79,8 +80,8 @@ int run_sequence_command(const SequenceOptions& o) {
   if (o.frames < 1 || o.frames > 100000) throw InputError("--frames must be in [1, 100000].");
   if (o.truth_every < 1 || o.truth_every > 100000) throw InputError("--truth-every must be in [1, 100000].");
   if (!(o.fps > 0.0f) || o.fps > 1000.0f) throw InputError("--fps must be in (0, 1000].");
-  if (!o.plot.empty() && fs::path(o.plot).extension() != ".svg") throw InputError("--plot is written as an .svg.");
-  require_output_files({{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}});
+  if (!o.plot.empty() && files::lower_extension(o.plot) != ".svg") throw InputError("--plot is written as an .svg.");
+  require_output_files({{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}}, {o.scene});
   // "frames/" (as shells complete it) is the directory "frames": its temporary sibling must not
   // land inside it.
   fs::path out_dir = fs::path(o.out).lexically_normal();
@@ -88,6 +89,7 @@ int run_sequence_command(const SequenceOptions& o) {
   if (!o.out.empty()) {
     const fs::path dir = out_dir, parent = fs::absolute(dir).parent_path();
     if (!fs::is_directory(parent)) throw InputError("--out: the directory '" + parent.string() + "' does not exist.");
+    require_creatable("--out", o.out, parent);  // the frames go to a temporary directory there
     if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
       throw InputError("--out '" + o.out + "' must be a new or empty directory.");
     const fs::path out_path = fs::absolute(dir).lexically_normal();
@@ -120,7 +122,7 @@ int run_sequence_command(const SequenceOptions& o) {
     const RgbaImage8 first = compose(im, labels, w, h);
     video.emplace(o.video, first.width, first.height, static_cast<int>(std::lround(std::min(o.fps, 120.0f))));
   }
-  const fs::path frames_tmp = o.out.empty() ? fs::path() : fs::path(out_dir.string() + ".tmp" + std::to_string(::getpid()));
+  const fs::path frames_tmp = o.out.empty() ? fs::path() : files::temp_path_beside(out_dir);
   if (!o.out.empty()) {
     fs::remove_all(frames_tmp);
     fs::create_directories(frames_tmp);

@@ -1,10 +1,16 @@
 #include "core/cli_common.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <regex>
 
 #include "core/errors.h"
+#include "core/files.h"
 
 namespace ssr {
 
@@ -30,7 +36,17 @@ std::pair<int, int> parse_named_size(const std::string& text) {
   return it != named.end() ? it->second : parse_size(text);
 }
 
-void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path) {
+void require_creatable(const std::string& option, const std::string& path, const std::filesystem::path& dir) {
+  const std::filesystem::path probe = files::temp_path_beside(dir / "x");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+  if (fd < 0)
+    throw InputError("cannot create " + option + " '" + path + "' in its directory (" + std::strerror(errno) + ").");
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
+void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path,
+                          const std::vector<std::string>& inputs) {
   namespace fs = std::filesystem;
   std::vector<std::pair<std::string, fs::path>> seen;
   for (const auto& [option, file] : option_and_path) {
@@ -42,6 +58,14 @@ void require_output_files(const std::vector<std::pair<std::string, std::string>>
                        " does not exist.");
     if (fs::is_directory(path, ec))
       throw InputError(option + " '" + file + "' is a directory, not a file.");
+    const long name_max = ::pathconf(path.parent_path().c_str(), _PC_NAME_MAX);
+    if (name_max > 0 && path.filename().native().size() > static_cast<std::size_t>(name_max))
+      throw InputError(option + " '" + file + "' has a name longer than the " + std::to_string(name_max) +
+                       " bytes its file system allows.");
+    require_creatable(option, file, path.parent_path());
+    for (const std::string& input : inputs)
+      if (fs::is_regular_file(input, ec) && fs::exists(path, ec) && fs::equivalent(path, input, ec))
+        throw InputError(option + " '" + file + "' would overwrite the input '" + input + "'.");
     for (const auto& [other, p] : seen)
       if (p == path || fs::equivalent(p, path, ec))
         throw InputError(option + " and " + other + " name the same file '" + file + "'.");

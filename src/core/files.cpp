@@ -1,5 +1,8 @@
 #include "core/files.h"
 
+#include <unistd.h>
+
+#include <atomic>
 #include <fstream>
 #include <system_error>
 
@@ -21,6 +24,19 @@ std::string q(std::string_view s) {
   r.reserve(s.size() + 2);
   r.append(1, '\'').append(s).append(1, '\'');
   return r;
+}
+
+fs::path temp_path_beside(const fs::path& target) {
+  static std::atomic<unsigned> counter{0};
+  return target.parent_path() / (".ssrlab-" + std::to_string(static_cast<long long>(::getpid())) + "-" +
+                                 std::to_string(counter++) + ".tmp");
+}
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return ext;
 }
 
 std::string read_file(const fs::path& path, std::uintmax_t cap, const std::string& what,

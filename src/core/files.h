@@ -16,6 +16,14 @@ std::string q(std::string_view s);
 inline std::string q(const std::string& s) { return q(std::string_view(s)); }
 inline std::string q(const std::filesystem::path& p) { return q(std::string_view(p.native())); }
 
+// A fresh name beside `target` (its directory, so that a rename commits it) for a temporary file
+// or directory: ".ssrlab-<pid>-<n>.tmp", short whatever the target's name, so a name near the
+// file system's limit still gets a temporary.
+std::filesystem::path temp_path_beside(const std::filesystem::path& target);
+
+// The path's extension in lower case (".PNG" and ".Png" -> ".png"), for checks of output formats.
+std::string lower_extension(const std::filesystem::path& path);
+
 // Reads a whole regular file of at most `cap` bytes. `what` names it ("OBJ file", ...);
 // `context` prefixes the messages (e.g. "MTL file 'x' line 3: ").
 std::string read_file(const std::filesystem::path& path, std::uintmax_t cap, const std::string& what,

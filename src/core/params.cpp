@@ -35,12 +35,21 @@ double ParamSet::get(std::size_t i) const { return read(data_, i); }
 bool ParamSet::is_auto(std::size_t i) const { return table_[i].has_auto() && get(i) == table_[i].auto_value; }
 double ParamSet::get_default(std::size_t i) const { return read(defaults_, i); }
 
+namespace {
+// A rejected value as the user wrote it, to the digit (format() rounds for tables).
+std::string exact(double v) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+}  // namespace
+
 void ParamSet::set(std::size_t i, double value) {
   const ParamDesc& d = table_[i];
   const bool is_auto = d.has_auto() && value == d.auto_value;
   if (!is_auto && (!std::isfinite(value) || value < d.min || value > d.max))
     throw InputError("parameter '" + key(i) + "' must be in " + range_string(i) + ", got " +
-                     format(i, value) + ".");
+                     exact(value) + ".");
   auto* p = static_cast<std::byte*>(data_) + d.offset;
   if (d.type == ParamType::Float) {
     const float f = static_cast<float>(value);
@@ -77,6 +86,11 @@ void ParamSet::set_from_string(std::size_t i, std::string_view text) {
   auto [ptr, ec] = std::from_chars(text.data(), end, v);
   if (ec != std::errc() || ptr != end || text.empty())
     throw InputError("parameter '" + key(i) + "' takes a number, got '" + std::string(text) + "'.");
+  // The number that stands for auto inside the table (e.g. 0 for a cap) is not a number the
+  // user may write: only the word means auto.
+  if (d.has_auto() && v == d.auto_value && (v < d.min || v > d.max))
+    throw InputError("parameter '" + key(i) + "' must be in " + range_string(i) + ", got " +
+                     std::string(text) + " (write auto for the automatic value).");
   set(i, v);
 }
 

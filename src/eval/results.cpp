@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "core/errors.h"
+#include "core/files.h"
 
 namespace ssr {
 namespace {
@@ -391,8 +392,7 @@ std::string breakdown_table(const RunResults& run, const std::vector<std::string
 }
 
 void write_text_file_atomic(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp" + std::to_string(static_cast<long long>(::getpid()));
+  const std::filesystem::path tmp = files::temp_path_beside(path);
   auto fail = [&](const std::string& why) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);

@@ -22,6 +22,7 @@
 #pragma GCC diagnostic pop
 
 #include "core/errors.h"
+#include "core/files.h"
 
 extern char** environ;
 
@@ -86,7 +87,7 @@ bool ffmpeg_available() {
 VideoWriter::VideoWriter(const std::string& path, int width, int height, int fps)
     : path_(path), width_(width), height_(height) {
   const fs::path p(path);
-  const std::string ext = p.extension().string();
+  const std::string ext = files::lower_extension(p);
   if (ext != ".mp4" && ext != ".mkv")
     throw InputError("video '" + path + "' must end in .mp4 or .mkv.");
   if (width < 1 || height < 1 || width > 16384 || height > 16384)

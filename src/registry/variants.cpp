@@ -68,12 +68,24 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   for (const std::string& s : sets) check_owner(split_assignment(s).first);
 
   // key -> values, per technique, in command-line order.
+  // A key swept twice, set and swept, or a value listed twice would run fewer or the same variants
+  // than the command line reads as: refused.
   std::map<std::string, std::vector<std::pair<std::string, std::vector<std::string>>>> sweep_of;
+  std::set<std::string> swept;
   for (const std::string& s : sweeps) {
     auto [key, values] = split_assignment(s);
     check_owner(key);
     if (is_truth(technique_of(key))) throw InputError("the reference cannot be swept.");
-    sweep_of[technique_of(key)].push_back({key, split_list(values, "sweep")});
+    if (!swept.insert(key).second)
+      throw InputError("--sweep names '" + key + "' twice (give all its values in one list).");
+    for (const std::string& set : sets)
+      if (split_assignment(set).first == key)
+        throw InputError("'" + key + "' is both set (--set) and swept (--sweep).");
+    std::vector<std::string> list = split_list(values, "sweep");
+    for (std::size_t i = 0; i < list.size(); ++i)
+      if (std::find(list.begin(), list.begin() + static_cast<long>(i), list[i]) != list.begin() + static_cast<long>(i))
+        throw InputError("--sweep '" + key + "' lists the value '" + list[i] + "' twice.");
+    sweep_of[technique_of(key)].push_back({key, std::move(list)});
   }
 
   // Count before building: sweeps multiply, and a few long lists would exhaust memory.

@@ -10,22 +10,21 @@
 #include <tinyexr.h>
 
 #include "core/errors.h"
+#include "core/files.h"
 
 namespace ssr {
 
 namespace fs = std::filesystem;
 
 ImageFormat image_format_for(const fs::path& path) {
-  const std::string ext = path.extension().string();
-  if (ext == ".png" || ext == ".PNG") return ImageFormat::Png;
-  if (ext == ".exr" || ext == ".EXR") return ImageFormat::Exr;
+  const std::string ext = files::lower_extension(path);
+  if (ext == ".png") return ImageFormat::Png;
+  if (ext == ".exr") return ImageFormat::Exr;
   throw InputError("output '" + path.string() + "' must end in .png or .exr.");
 }
 
 namespace {
-fs::path temp_path_for(const fs::path& path) {
-  return path.string() + ".tmp" + std::to_string(::getpid());
-}
+fs::path temp_path_for(const fs::path& path) { return files::temp_path_beside(path); }
 void commit(const fs::path& tmp, const fs::path& path) {
   std::error_code ec;
   fs::rename(tmp, path, ec);

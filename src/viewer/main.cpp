@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli_options.h"
 #include "core/errors.h"
 #include "viewer/viewer.h"
 
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   app.add_option("--script", o.script, "Run the commands of this file (--help-script lists them), then exit.");
   app.add_flag("--help-script", help_script, "List the script commands and exit.");
   app.add_option("--ini", o.ini, "ImGui layout file (default: ~/.config/ssrlab/imgui.ini).");
+  refuse_empty_values(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -182,7 +182,7 @@ render_bad bad.png "$in/tex_bad.obj"
 head -c 4096 /dev/urandom >"$in/random.obj";               render_bad random.obj "$in/random.obj"
 cp "$in/good.obj" "$in/locked.obj"; chmod 000 "$in/locked.obj"
 if [ ! -r "$in/locked.obj" ]; then render_bad locked.obj "$in/locked.obj"; fi  # root reads anyway
-bad "scene ''" render --scene "" --size 32x18 --out "$out/x.png"
+bad "--scene needs a value" render --scene "" --size 32x18 --out "$out/x.png"
 bad "does not exist" render --scene "$in/two
 lines.json" --size 32x18 --out "$out/x.png"  # a line break in a name stays on one line
 
@@ -275,6 +275,36 @@ mkdir -p "$in/dir.svg"; bad "directory" bench --json "$out/b.json" --plot "$in/d
 bad "same file" compare $S --out "$out/x.png" --json "$out/x.png"
 bad "same file" bench --json "$out/b.json" --csv "$out/./b.json"
 bad "shader directory" bench --shaders "$in/no-such-dir" --json "$out/b.json"
+# Outputs are checked before any work: a directory that takes no new file (/proc refuses even
+# root), a name longer than the file system allows, an output that is an input.
+bad "cannot create --out" render $S --out /proc/ssrlab-x.png
+bad "cannot create --json" compare $S --out "$out/x.png" --json /proc/ssrlab-r.json
+bad "cannot create --csv" bench --sizes 32x18 --techniques none --json "$out/b.json" --csv /proc/b.csv
+bad "cannot create --out" sequence $S --frames 2 --techniques none --json "$out/s.json" --out /proc/frames
+bad "cannot create --json" passfloor --sizes 16x16 --json /proc/p.json
+bad "longer than" render $S --out "$out/$(printf 'a%.0s' $(seq 252)).png"
+scene as_input
+cp "$in/as_input.json" "$tmp/as_input.kept"
+bad "overwrite the input" compare --scene "$in/as_input.json" $S --out "$out/x.png" --json "$in/as_input.json"
+bad "overwrite the input" bench --scenes "gallery,$in/as_input.json" --sizes 32x18 --json "$out/b.json" --csv "$in/as_input.json"
+bad "overwrite the input" sequence --scene "$in/as_input.json" $S --frames 2 --json "$in/as_input.json"
+cmp -s "$in/as_input.json" "$tmp/as_input.kept" || fail "the input scene was changed"
+# An empty value is an error, not "not given" (CLI11 would read --warmup "" as 0).
+bad "empty string" bench --warmup "" --json "$out/b.json"
+bad "empty string" sequence $S --frames 2 --json ""
+bad "empty string" render --exposure "" $S --out "$out/x.png"
+# Sweeps that would run fewer or the same variants than they read as.
+bad twice bench --techniques linear --sweep linear.max_steps=8,16 --sweep linear.max_steps=32 --json "$out/b.json"
+bad twice bench --techniques linear --sweep linear.max_steps=8,8 --json "$out/b.json"
+bad "both set" bench --techniques linear --set linear.max_steps=8 --sweep linear.max_steps=16,32 --json "$out/b.json"
+# The number that stands for auto inside the table is not a value to write (only "auto" is).
+bad "write auto" render --technique hiz --set hiz.max_iterations=0 $S --out "$out/x.png"
+bad "write auto" render --set linear.roughness=-1 $S --out "$out/x.png"
+# A rejected value is quoted to the digit, not rounded into the range.
+bad "0.00099999999999" render --technique hiz --set hiz.thickness=0.00099999999999 $S --out "$out/x.png"
+# A NUL inside a JSON string would cut a file name short.
+json nul '{"meshes": [{"obj": "good.obj\u0000.png"}]}'
+render_bad "NUL character" "$in/nul.json"
 
 # compare and bench refuse bad scenes the same way, before writing anything.
 bad 4000000000 compare --scene "$in/huge_index.obj" $S --out "$out/x.png" --json "$out/r.json"

@@ -201,6 +201,31 @@ TEST(CameraPath, ContinuousExceptAcrossACut) {
   EXPECT_LT(mid.fov_y_deg, 60.0f);
 }
 
+// Two valid keys on either side of the target, both looking down at it: half-way the spline looks
+// straight down the up vector, where a look-at view has no roll. The camera must still form a
+// view there (an up vector across its direction, pointing where the keys head), and keep the
+// scene's up wherever the view is not along it.
+TEST(CameraPath, PassingOverTheTargetStillFormsAView) {
+  CameraPath p;
+  p.keys = {{0.0f, {0, 2, 1}, {0, 0, 0}, 60.0f, false}, {1.0f, {0, 2, -1}, {0, 0, 0}, 60.0f, false}};
+  const Camera base = base_camera();
+  int along = 0;
+  for (int i = 0; i <= 100; ++i) {
+    const float t = static_cast<float>(i) / 100.0f;
+    SCOPED_TRACE(t);
+    const Camera c = ssr::camera_at(p, t, base);
+    const glm::vec3 d = c.target - c.position;
+    const bool down = glm::length(glm::cross(d, base.up)) < 1e-6f * glm::length(d) * glm::length(base.up);
+    along += down;
+    // What scene validation asks of a camera (scene.cpp): up not along the view.
+    EXPECT_GE(glm::length(glm::cross(d, c.up)), 1e-6f * glm::length(d) * glm::length(c.up));
+    if (!down) EXPECT_EQ(c.up, base.up);
+  }
+  EXPECT_EQ(along, 1);  // t = 0.5, exactly above the target
+  const Camera mid = ssr::camera_at(p, 0.5f, base);
+  EXPECT_GT(glm::dot(mid.up, glm::vec3(0, 0, -1)), 0.99f * glm::length(mid.up));  // key a heads to -z
+}
+
 TEST(CameraPath, CutBetweenIsHalfOpen) {
   const CameraPath p = test_path();
   EXPECT_TRUE(ssr::cut_between(p, 2.9f, 3.0f));
