@@ -17,7 +17,8 @@ const float PPR_OFF_SURFACE = 0.02;         // an approximated point this far of
 struct PprResolved {
   bool served;      // false: projection has no answer here (the pass asks its fallback)
   vec4 reflection;  // rgb radiance, a confidence
-  vec4 debug;       // offset to the source (px), hole before patching, hole after
+  vec4 debug;       // offset to the source (px); z: a hole before patching; w: no projected answer
+                    // (a hole left, or a source refused for the fallback): the holes view's r, g
 };
 
 // The source position (continuous pixel coordinates) that the packed value w at pixel q names.

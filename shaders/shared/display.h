@@ -16,7 +16,7 @@
 #define VIEW_HITS 11        // share of the pixel's rays that hit, grey
 #define VIEW_DISTANCE 12    // mean hit distance, heat map (0 .. 20 world units)
 #define VIEW_OFFSETS 13     // PPR: decoded offset to the source pixel as colour (0.5 = none)
-#define VIEW_HOLES 14       // PPR: red = hole before patching, yellow = still a hole after
+#define VIEW_HOLES 14       // PPR: red = hole patched, green = projection refused (fallback), yellow = no source
 #define VIEW_REFLECTED 15   // what the composite weights: mix(env, reflection.rgb, a); through glass mix(lit, refraction.rgb, a)
 #define VIEW_MOTION 16     // motion vectors (G-buffer): hue = direction, brightness = length
 // Stage views: a technique texture at TEX_STAGE_VIEW (TechniqueDecl::stage_views)

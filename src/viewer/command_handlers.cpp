@@ -137,14 +137,15 @@ void Viewer::on_Truth(const std::string& a) {
   }
 }
 
-// Draws one more frame and saves the whole window as presented.
+// Draws the window again (the same frame: time and history stay; a side whose settings changed
+// since it was drawn runs) and saves it as presented.
 void Viewer::on_WindowShot(const std::string& a) {
   window_shot_ = a;
-  frame(0.0);
+  frame(0.0, /*advance=*/false);
 }
 
 void Viewer::on_Inspect(const std::string& a) {
-  if (!inspected_) {  // the debug image it reads: written from the next frame on
+  if (!inspected_) {  // the debug image it reads is written from the next frame on: one more frame
     inspected_ = true;
     frame(0.0);
   }
@@ -160,7 +161,8 @@ void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : 
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
 // "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr",
-// "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn)}.
+// "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
+// "frame" (the index of the frame shown: history counts it), "time" (scene seconds)}.
 void Viewer::on_Status(const std::string&) {
   nlohmann::json j;
   j["message"] = status_;
@@ -176,6 +178,8 @@ void Viewer::on_Status(const std::string&) {
   for (const SectionInfo& s : kPanelSections)
     if (panel_shown_ && section_open_[s.section]) open.push_back(s.name);
   j["sections_open"] = open;
+  j["frame"] = frame_index_;
+  j["time"] = time_;
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);
 }

@@ -48,10 +48,10 @@
   X(Pause, "pause", None, "", "stop playback")                                                          \
   X(Truth, "truth", TruthPolicy, "now|rest|live|manual",                                                \
     "the on-demand side (the reference): compute now, once the camera rests, every changed frame, or only when asked") \
-  X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays)") \
-  X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line, and pin the inspector there") \
+  X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays), drawn again without advancing time") \
+  X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line, and pin the inspector there (the first one draws one more frame: the debug image is written from then on)") \
   X(Magnifier, "magnifier", Zoom, "off|2..16", "the magnifier at the cursor (nearest filtering) at this zoom, or off") \
-  X(Status, "status", None, "", "print the status bar's message, device, frame time and truth state as one JSON line")
+  X(Status, "status", None, "", "print the status bar's message, device, frame time, truth state, frame index and scene time as one JSON line")
 
 namespace ssr {
 

@@ -136,15 +136,26 @@ void Viewer::update_traceable_mask() {
   mask_key_ = key;
 }
 
-void Viewer::render() {
+void Viewer::take_times(Side& s) {
+  for (const gl::FrameTimes& t : s.timer->completed()) {
+    s.history.push_back(static_cast<float>(technique_ms(t)));
+    while (s.history.size() > 120) s.history.pop_front();
+  }
+  if (!s.timer->completed().empty()) s.last_times = s.timer->completed().back();
+  s.timer->completed().clear();
+}
+
+void Viewer::render(bool advance) {
   const bool grid = compare_ == CompareGrid;
   const int W = image_w_, H = image_h_, w = render_w(), h = render_h();
   if (w <= 0 || h <= 0) return;
   renderer_->resize(w, h);
-  ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
-  advance_time();
-  cut_ = cut_next_;
-  cut_next_ = false;
+  if (advance) {
+    ++frame_index_;  // every drawn frame is the next one of a sequence: history carries
+    advance_time();
+    cut_ = cut_next_;
+    cut_next_ = false;
+  }
   if (!view_offered(view_)) {  // the technique changed: its debug view is gone
     set_status("view '" + view_names_[static_cast<std::size_t>(view_)] + "' is not filled by the technique now shown: final image", true);
     view_ = VIEW_FINAL;
@@ -181,6 +192,7 @@ void Viewer::render() {
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     const std::string key = fkey + "|" + technique_key(*s.technique, frame_index_);
+    if (!advance && s.valid && s.shown_key == key) continue;  // drawn again: already current
     // On-demand techniques run when asked, once the camera rests (auto), on every changed frame
     // (live, and in scripted runs). One frame says "computing" first.
     if (on_demand(i) && s.request == 0 && s.shown_key != key && truth_policy_ == TruthPolicy::Rest && rested)
@@ -215,12 +227,7 @@ void Viewer::render() {
                          w, h, 1);
     s.valid = true;
     s.shown_key = key;
-    if (!s.timer->completed().empty()) {
-      s.last_times = s.timer->completed().back();
-      s.timer->completed().clear();
-      s.history.push_back(static_cast<float>(technique_ms(s.last_times)));
-      while (s.history.size() > 120) s.history.pop_front();
-    }
+    take_times(s);
   }
   // Compose A | B (split), the heat map (difference), the grid, or A alone.
   auto diff_into = [&](const gl::Texture2D& a, const gl::Texture2D& b, const gl::Texture2D& out) {

@@ -257,11 +257,16 @@ void colour_bar(Map map, float full, const char* unit, bool clamps) {
   ImGui::TextUnformatted(right);
 }
 
-void swatch(const char* name, glm::vec3 c) {
+// A colour box and its name, on the line of the one before (`first`: a new line) where both fit.
+void swatch(const char* name, glm::vec3 c, bool first) {
+  if (!first) {
+    ImGui::SameLine();
+    const float need = 12.0f + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(name).x;
+    if (ImGui::GetContentRegionAvail().x < need) ImGui::NewLine();
+  }
   ImGui::ColorButton(name, ImVec4(c.x, c.y, c.z, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
   ImGui::SameLine();
   ImGui::TextUnformatted(name);
-  if (ImGui::GetContentRegionAvail().x > 150) ImGui::SameLine();
 }
 
 }  // namespace
@@ -280,8 +285,7 @@ void draw_view_legend(const ViewInfo& view, float exposure) {
       colour_bar([](float t) { return shared::heat(t); }, l.full, l.unit, true);
       break;
     case Legend::Swatches:
-      for (const Legend::Swatch& s : l.swatches) swatch(s.name, glm::vec3(s.r, s.g, s.b));
-      ImGui::NewLine();
+      for (const Legend::Swatch& s : l.swatches) swatch(s.name, glm::vec3(s.r, s.g, s.b), &s == &l.swatches.front());
       break;
     case Legend::Encoded:
       break;  // the description says how
@@ -296,8 +300,8 @@ void draw_difference_legend(float full_scale, const char* what) {
 void draw_class_legend() {
   ImGui::TextUnformatted("the reference's class of each reflective pixel");
   for (const PixelClass c : {PixelClass::Traceable, PixelClass::Missing, PixelClass::Sky})
-    swatch(c == PixelClass::Traceable ? "traceable" : c == PixelClass::Missing ? "missing" : "sky", class_colour(c));
-  ImGui::NewLine();
+    swatch(c == PixelClass::Traceable ? "traceable" : c == PixelClass::Missing ? "missing" : "sky", class_colour(c),
+           c == PixelClass::Traceable);
 }
 
 void draw_pixel_values(const nlohmann::ordered_json& values) {
@@ -343,16 +347,23 @@ StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys and mouse (F1)");
   char right[256];
   const std::string truth = line.truth.empty() ? "" : "truth: " + line.truth + "  |  ";
-  std::snprintf(right, sizeof right, "%sframe %.1f ms (%s)  |  %s", truth.c_str(), line.frame_ms,
-                line.gpu ? "gpu timers" : "cpu clock", line.device.c_str());
+  std::snprintf(right, sizeof right, "%sframe %.1f ms (wall clock)  |  %s", truth.c_str(), line.frame_ms,
+                line.device.c_str());
   const float right_w = ImGui::CalcTextSize(right).x;
   ImGui::SameLine();
   const float msg_w = ImGui::GetContentRegionAvail().x - right_w - 12.0f;
   if (msg_w > 20 && !line.message.empty()) {
+    // One line (a shader error's file:line:col is on its second), clipped to the room left of
+    // the figures; the item is that room, so the figures keep their place. All of it on hover.
+    std::string shown = line.message;
+    for (char& c : shown)
+      if (c == '\n' || c == '\r' || c == '\t') c = ' ';
     const ImVec2 p = ImGui::GetCursorScreenPos();
-    ImGui::PushClipRect(p, ImVec2(p.x + msg_w, p.y + ImGui::GetTextLineHeight()), true);
-    ImGui::TextColored(line.error ? kErrorColour : ImVec4(0.8f, 0.9f, 0.8f, 1), "%s", line.message.c_str());
-    ImGui::PopClipRect();
+    const ImVec2 size(msg_w, ImGui::GetTextLineHeight());
+    const ImVec4 clip(p.x, p.y, p.x + size.x, p.y + size.y);
+    ImGui::GetWindowDrawList()->AddText(nullptr, 0.0f, p, ImGui::GetColorU32(line.error ? kErrorColour : ImVec4(0.8f, 0.9f, 0.8f, 1)),
+                                        shown.c_str(), nullptr, 0.0f, &clip);
+    ImGui::Dummy(size);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", line.message.c_str());
     ImGui::SameLine();
   }
@@ -381,32 +392,51 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
       after = at + 1;
     }
   }
-  if (n > 0 && ImGui::BeginTable("passes", static_cast<int>(1 + 2 * n), ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-    ImGui::TableSetupColumn(gpu ? "pass (gpu)" : "pass (cpu)");
-    for (const TimingColumn& c : columns) {
-      ImGui::TableSetupColumn((c.label + " ms").c_str());
-      ImGui::TableSetupColumn("%");
+  // The cells as text first, so each column is as wide as its widest cell (a fitted column keeps
+  // the width of the first frame it saw: "total" alone, before the passes' rows arrived).
+  // Times in three significant digits (four from 1000 ms): the table fits the panel's default
+  // width with llvmpipe's hundreds of ms as with a GPU's hundredths.
+  auto ms_text = [](double ms) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, ms >= 100.0 ? "%.0f" : ms >= 10.0 ? "%.1f" : ms >= 1.0 ? "%.2f" : "%.3f", ms);
+    return std::string(buf);
+  };
+  std::vector<std::vector<std::string>> cells;  // header, one row a pass, total
+  cells.push_back({gpu ? "pass (gpu)" : "pass (cpu)"});
+  for (const TimingColumn& c : columns) {
+    cells.back().push_back(c.label + " ms");
+    cells.back().push_back("%");
+  }
+  auto row = [&](const std::string& name, auto&& ms_of) {
+    cells.push_back({name});
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::optional<double> ms = ms_of(i);
+      cells.back().push_back(ms ? ms_text(*ms) : "");
+      cells.back().push_back(ms && total[i] > 0 ? std::to_string(std::lround(100.0 * *ms / total[i])) : "");
+    }
+  };
+  for (const gl::PassTime& r : rows)
+    row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name, [&](std::size_t i) -> std::optional<double> {
+      for (const auto& p : columns[i].passes)
+        if (p.name == r.name) return p.ms;
+      return std::nullopt;
+    });
+  row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
+  const int n_cols = static_cast<int>(1 + 2 * n);
+  if (n > 0 && ImGui::BeginTable("passes", n_cols, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (int c = 0; c < n_cols; ++c) {
+      float w = 0;
+      for (const auto& r : cells) w = std::max(w, ImGui::CalcTextSize(r[static_cast<std::size_t>(c)].c_str()).x);
+      ImGui::TableSetupColumn(cells[0][static_cast<std::size_t>(c)].c_str(), ImGuiTableColumnFlags_WidthFixed, w);
     }
     ImGui::TableHeadersRow();
-    auto row = [&](const std::string& name, auto&& ms_of) {
+    for (std::size_t r = 1; r < cells.size(); ++r) {
       ImGui::TableNextRow();
-      ImGui::TableNextColumn();
-      ImGui::TextUnformatted(name.c_str());
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::optional<double> ms = ms_of(i);
+      for (const std::string& text : cells[r]) {
         ImGui::TableNextColumn();
-        if (ms) ImGui::Text("%.3f", *ms);
-        ImGui::TableNextColumn();
-        if (ms && total[i] > 0) ImGui::Text("%.0f", 100.0 * *ms / total[i]);
+        ImGui::TextUnformatted(text.c_str());
       }
-    };
-    for (const gl::PassTime& r : rows)
-      row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name, [&](std::size_t i) -> std::optional<double> {
-        for (const auto& p : columns[i].passes)
-          if (p.name == r.name) return p.ms;
-        return std::nullopt;
-      });
-    row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
+    }
     ImGui::EndTable();
   }
   const float plot_w = std::max(ImGui::GetContentRegionAvail().x, 60.0f);  // ImGui 1.86 draws nothing for -1

@@ -45,8 +45,7 @@ struct StatusLine {
   std::string message;
   bool error = false;
   std::string truth;     // "" (no on-demand side), "current", "stale", "computing"
-  double frame_ms = 0;
-  bool gpu = false;      // GPU timers, else the CPU clock
+  double frame_ms = 0;   // wall clock from one frame to the next (the timing panel has the passes')
   std::string device;
 };
 struct StatusActions {

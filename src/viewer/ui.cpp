@@ -122,8 +122,12 @@ void Viewer::handle_input(double dt) {
                                             std::min(static_cast<int>(mouse.y * sy), image_h_ - 1)))
                  : std::nullopt;
   // The panel's edge: drag it to resize the panel.
+  // A press is judged where it happened (ImGui's click position): a slow frame (llvmpipe: up to
+  // a second) sees the cursor only after it has moved on.
   const bool near_edge = panel_shown_ && std::abs(static_cast<float>(mouse.x) - image_w) < 5.0f && mouse.y < image_h;
-  if (near_edge && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) resizing_panel_ = true;
+  const ImVec2 click = io.MouseClickedPos[ImGuiMouseButton_Left];
+  const bool click_near_edge = panel_shown_ && std::abs(click.x - image_w) < 5.0f && click.y < image_h;
+  if (click_near_edge && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) resizing_panel_ = true;
   if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) resizing_panel_ = false;
   // Dragged: at least 200 px of panel and 64 of image.
   if (resizing_panel_) panel_w_ = std::clamp(io.DisplaySize.x - static_cast<float>(mouse.x), 200.0f, std::max(200.0f, io.DisplaySize.x - 64.0f));
@@ -137,9 +141,12 @@ void Viewer::handle_input(double dt) {
   if (near_edge || resizing_panel_ || ((near_divider && !io.WantCaptureMouse) || dragging_divider_))
     ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
   const bool mouse_free = !io.WantCaptureMouse && !dragging_divider_ && !resizing_panel_ && !near_edge;
+  // Only movement while a button is held moves the camera: on the frame of the press, the delta
+  // since the last frame is travel made before it (a whole slow frame's worth on llvmpipe).
+  auto dragging = [](ImGuiMouseButton b) { return ImGui::IsMouseDown(b) && !ImGui::IsMouseClicked(b); };
   if (mouse_free && over_image) {
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) in.orbit = delta;
-    if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) in.pan = delta;
+    if (dragging(ImGuiMouseButton_Left)) in.orbit = delta;
+    if (dragging(ImGuiMouseButton_Right)) in.pan = delta;
     in.wheel = io.MouseWheel;
   }
   if (camera_.update(in)) last_moved_ = glfwGetTime();
@@ -288,10 +295,8 @@ void Viewer::status_bar(double dt) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6, 4));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
   ImGui::Begin("##status", nullptr, kFixed | ImGuiWindowFlags_NoScrollbar);
-  // A frame drawn again for a window-shot (dt 0) shows the last timed frame's figure.
-  const double frame_ms = dt > 0.0 ? dt * 1000.0 : frame_ms_.empty() ? 0.0 : frame_ms_.back();
-  StatusLine line{status_, status_error_, truth_state() == "none" ? "" : truth_state(), frame_ms,
-                  clock_ == gl::PassTimer::Clock::Gpu, window_->info().renderer};
+  StatusLine line{status_, status_error_, truth_state() == "none" ? "" : truth_state(), shown_frame_ms(dt),
+                  window_->info().renderer};
   const StatusActions act = draw_status_line(line, panel_shown_);
   if (act.toggle_panel) ui_command(Verb::Panel, panel_shown_ ? "off" : "on");
   if (act.toggle_keys) help_shown_ = !help_shown_;
@@ -422,9 +427,26 @@ bool Viewer::section_header(PanelSection s) {
 }
 
 void Viewer::scene_panel() {
-  int current = static_cast<int>(std::find(scene_names_.begin(), scene_names_.end(), scene_spec_) - scene_names_.begin());
-  if (current >= static_cast<int>(scene_names_.size())) current = -1;
-  if (combo("scene", &current, scene_names_) && current >= 0) ui_command(Verb::Scene, scene_names_[static_cast<std::size_t>(current)]);
+  // The scene files by their file names (the full path is the tooltip), and the current one found
+  // however it was named (a relative path on the command line, "./x.json").
+  if (scene_labels_.size() != scene_names_.size()) {
+    scene_labels_.clear();
+    for (const std::string& n : scene_names_)
+      scene_labels_.push_back(n.find('/') == std::string::npos ? n : std::filesystem::path(n).filename().string());
+    scene_choice_for_.reset();
+  }
+  if (scene_choice_for_ != scene_spec_) {
+    scene_choice_for_ = scene_spec_;
+    scene_choice_ = -1;
+    std::error_code ec;
+    for (std::size_t i = 0; i < scene_names_.size() && scene_choice_ < 0; ++i)
+      if (scene_names_[i] == scene_spec_ || (scene_names_[i].find('/') != std::string::npos &&
+                                             std::filesystem::equivalent(scene_names_[i], scene_spec_, ec)))
+        scene_choice_ = static_cast<int>(i);
+  }
+  int current = scene_choice_;
+  if (combo("scene", &current, scene_labels_) && current >= 0) ui_command(Verb::Scene, scene_names_[static_cast<std::size_t>(current)]);
+  if (ImGui::IsItemHovered() && !scene_spec_.empty()) ImGui::SetTooltip("%s", scene_spec_.c_str());
   // Built-in scenes' options, one combo each: the spec becomes "name:key=value,..." as --scene takes it.
   const std::string base = scene_spec_.substr(0, scene_spec_.find(':'));
   for (const BuiltinSceneInfo& s : builtin_scenes()) {
@@ -606,6 +628,10 @@ void Viewer::time_panel() {
   ImGui::TextDisabled("frame %d, %s", frame_index_, renderer_->history_valid() ? "history carried" : "history restarted");
 }
 
+double Viewer::shown_frame_ms(double dt) const {
+  return dt > 0.0 ? dt * 1000.0 : frame_ms_.empty() ? 0.0 : frame_ms_.back();
+}
+
 // Per-pass times of the last frame of each side (ms and % of that side's frame), the
 // technique's rolling plot and the frame time. Labelled `gpu` or `cpu` (llvmpipe: CPU clock).
 void Viewer::timing_panel(double dt) {
@@ -615,7 +641,7 @@ void Viewer::timing_panel(double dt) {
     columns.push_back({i == 0 ? "A" : i == 1 ? "B" : "truth", s.technique->name(), s.last_times,
                        std::vector<float>(s.history.begin(), s.history.end())});
   }
-  draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), dt * 1000.0,
+  draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), shown_frame_ms(dt),
               clock_ == gl::PassTimer::Clock::Gpu);
   if (renderer_->debug_outputs)
     text_disabled_wrapped("includes the debug image the inspector reads (bench leaves it out: tracers up to a fifth "

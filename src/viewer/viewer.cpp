@@ -265,7 +265,12 @@ void Viewer::present() {
   window_shot_.clear();
 }
 
-void Viewer::frame(double dt) {
+void Viewer::frame(double dt, bool advance) {
+  if (!advance)  // drawn again to be saved: the panel shows the timings still in the timers' ring
+    for (Side& s : sides_) {
+      s.timer->flush();
+      take_times(s);
+    }
   window_->begin_ui();
   handle_input(dt);
   layout();
@@ -275,7 +280,7 @@ void Viewer::frame(double dt) {
     present();
     return;
   }
-  render();
+  render(advance);
   // The image at the top left (GL rows go up: it ends at the window's top), the rest cleared
   // for the panels.
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -87,14 +87,19 @@ class Viewer {
   void set_time(float t);
   void save(const std::string& path);
   void reload();
-  void frame(double dt);
+  // One frame: input, panels, the image, present. `advance` false: the same frame drawn again
+  // (a window-shot): time, frame index and history stay, and a side whose image is current is
+  // not run again.
+  void frame(double dt, bool advance = true);
   void present();  // the window's frame (saved when a window-shot is pending)
   void set_status(const std::string& message, bool error);
   // A command from a key or a button: its error goes to the status bar, not up the stack.
   void ui_command(Verb verb, const std::string& arg = "");
 
   // --- compare.cpp ---
-  void render();
+  void render(bool advance);
+  // Moves the side's completed timer frames into its rolling history and last_times.
+  void take_times(Side& s);
   void update_traceable_mask();
   std::string frame_key() const;
   bool side_current(int i) const;  // the side's image shows the current frame and parameters
@@ -123,6 +128,9 @@ class Viewer {
   void technique_panel(int side);
   void time_panel();
   void timing_panel(double dt);
+  // The frame time to show: dt, or for a frame drawn again without time passing (dt 0: a
+  // window-shot) the last timed frame's.
+  double shown_frame_ms(double dt) const;
   void draw_progress(const std::string& what, double fraction);
   void inspector_panel();
   // The collapsing header of a panel section (kPanelSections), opened or closed first when the
@@ -199,6 +207,9 @@ class Viewer {
   glm::dvec2 last_mouse_{0};
   std::deque<float> frame_ms_;
   std::vector<std::string> view_names_, scene_names_;
+  std::vector<std::string> scene_labels_;           // scene_names_ as the picker shows them
+  std::optional<std::string> scene_choice_for_;     // the scene spec scene_choice_ was found for
+  int scene_choice_ = -1;                           // its index in scene_names_, or -1
   char preset_path_[512] = "ssrlab-preset.json";
   char scene_path_[512] = "";
   int bookmarks_ = 0;

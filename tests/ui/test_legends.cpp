@@ -103,7 +103,7 @@ TEST(Legends, PixelValuesOneLineEach) {
 
 TEST(StatusLine, TogglesActAndErrorsAreRed) {
   ImGuiHarness ui;
-  StatusLine line{"shader error: render/lighting.comp:12: syntax", true, "stale", 12.5, false, "llvmpipe"};
+  StatusLine line{"shader error: render/lighting.comp:12: syntax", true, "stale", 12.5, "llvmpipe"};
   StatusActions act;
   ImGuiID panel = 0, keys = 0;  // as ImGui names the buttons, inside the frame
   auto draw = [&] {
@@ -123,6 +123,36 @@ TEST(StatusLine, TogglesActAndErrorsAreRed) {
   EXPECT_TRUE(ui.click(hits.at(panel).center(), [&] { return draw_status_line(line, true).toggle_panel; }));
   EXPECT_TRUE(ui.click(hits.at(keys).center(), [&] { return draw_status_line(line, true).toggle_keys; }));
   EXPECT_FALSE(ui.click(hits.at(keys).center(), [&] { return draw_status_line(line, true).toggle_panel; }));
+  EXPECT_TRUE(ui.errors().empty());
+}
+
+// The figures on the right keep their place whatever the message: a long or multi-line one is
+// clipped to the room left of them (it once pushed them off the window's edge).
+TEST(StatusLine, ALongMessageLeavesTheFiguresInPlace) {
+  ImGuiHarness ui;
+  const ImU32 grey = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  auto figures_span = [&](const std::string& message) {
+    const StatusLine line{message, true, "", 12.5, "llvmpipe (LLVM 15.0.6, 256 bits)"};
+    ui.frame([&] {
+      draw_status_line(line, true);
+      return false;
+    });
+    float lo = FLT_MAX, hi = -FLT_MAX;
+    const ImDrawData* d = ImGui::GetDrawData();
+    for (int i = 0; d && i < d->CmdListsCount; ++i)
+      for (const ImDrawVert& v : d->CmdLists[i]->VtxBuffer)
+        if (v.col == grey) lo = std::min(lo, v.pos.x), hi = std::max(hi, v.pos.x);
+    return std::pair{lo, hi};
+  };
+  const auto alone = figures_span("");
+  ASSERT_LT(alone.first, alone.second);
+  EXPECT_LE(alone.second, ImGuiHarness::kWidth);
+  const std::string long_line(400, 'x');
+  for (const std::string& m : {long_line, "shader compile failed\nrender/lighting.comp:12:3: " + long_line}) {
+    const auto with = figures_span(m);
+    EXPECT_FLOAT_EQ(with.first, alone.first);
+    EXPECT_FLOAT_EQ(with.second, alone.second);
+  }
   EXPECT_TRUE(ui.errors().empty());
 }
 

@@ -150,4 +150,24 @@ assert s[1] == ['inspector', 'view', 'technique-a', 'timing'], s[1]
 assert s[2] == ['inspector', 'view', 'technique-a', 'timing'], 'B was asked closed before it was drawn: ' + str(s[2])
 assert s[3] == [], 'a hidden panel shows no section'
 PY
+# A window-shot draws the window again without advancing: the same frame index and scene time
+# while playing, and the same image (it once drew one more frame, a step of time and of history).
+printf 'technique stochastic\npath dolly\nplay\nframes 3\nstatus\nwindow-shot %s\nwindow-shot %s\nstatus\n' \
+  "$PWD/shot1.png" "$PWD/shot2.png" > shots.txt
+view --scene cornell --size 160x90 --script shots.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - <<'PY'
+import json, zlib
+s = [json.loads(l.split('status ', 1)[1]) for l in open('log.txt') if 'ssrlab-view: status ' in l]
+print('frame, time before and after two window-shots:', [(x['frame'], x['time']) for x in s])
+assert (s[0]['frame'], s[0]['time']) == (s[1]['frame'], s[1]['time']), s
+assert s[0]['time'] > 0, 'the path was not playing'
+def pixels(path):  # the PNG's decompressed rows (both shots are written alike)
+    data, out, i = open(path, 'rb').read(), b'', 8
+    while i < len(data):
+        n = int.from_bytes(data[i:i + 4], 'big'); kind = data[i + 4:i + 8]
+        if kind == b'IDAT': out += data[i + 8:i + 8 + n]
+        i += 12 + n
+    return zlib.decompress(out)
+assert pixels('shot1.png') == pixels('shot2.png'), 'the second window-shot shows another frame'
+PY
 echo "viewer script ok"
