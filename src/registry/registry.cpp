@@ -56,7 +56,7 @@ const std::vector<TechniqueInfo>& technique_registry() {
        make_reference_technique, /*truth=*/true, /*on_demand=*/true},
       {"planar",
        "the classic mirrored-camera render of each planar reflector: a second, independent "
-       "oracle",
+       "oracle for flat mirrors (roughness and normal maps ignored: sharp on a rough floor)",
        make_planar_technique, /*truth=*/false, /*on_demand=*/false, /*oracle=*/true},
   };
   return registry;

@@ -157,7 +157,10 @@ void Viewer::render(bool advance) {
     cut_next_ = false;
   }
   if (!view_offered(view_)) {  // the technique changed: its debug view is gone
-    set_status("view '" + view_names_[static_cast<std::size_t>(view_)] + "' is not filled by the technique now shown: final image", true);
+    const std::string name = view_names_[static_cast<std::size_t>(view_)];
+    set_status(compare_ == CompareGrid ? "the grid shows final images (its truth has no view '" + name + "'): final image"
+                                       : "view '" + name + "' is not filled by the technique now shown: final image",
+               true);
     view_ = VIEW_FINAL;
   }
   if (!composed_ || composed_.width() != W || composed_.height() != H) {
