@@ -21,17 +21,17 @@ std::pair<int, int> parse_named_size(const std::string& text);
 // `text` made safe for a Markdown table cell: a '|' inside a cell would end it.
 std::string markdown_cell(std::string text);
 
-// Output files, checked before any work so that a bad path costs nothing and leaves nothing: the
-// directory must exist and take a new file (a file is created there and removed), the name must
-// fit the file system, the path must not be a directory, no two outputs of one command may be
-// the same file, and no output may be one of `inputs` (e.g. the --scene file). Pairs of
-// {option, path}, e.g. {"--json", "r.json"}; empty paths are skipped, and inputs that are not
-// files (built-in scene names).
 // Throws InputError unless a new file can be made in `dir` (one is made and removed: permissions
 // alone do not say, as root ignores them and a read-only mount refuses root too). `option` and
 // `path` name the output in the message.
 void require_creatable(const std::string& option, const std::string& path, const std::filesystem::path& dir);
 
+// Output files, checked before any work so that a bad path costs nothing and leaves nothing: the
+// directory must exist and take a new file (require_creatable), the name must fit the file
+// system, the path must not be a directory, no two outputs of one command may be the same file,
+// and no output may be one of `inputs` (e.g. the --scene file). Pairs of {option, path}, e.g.
+// {"--json", "r.json"}; empty paths are skipped, and inputs that are not files (built-in scene
+// names).
 void require_output_files(const std::vector<std::pair<std::string, std::string>>& option_and_path,
                           const std::vector<std::string>& inputs = {});
 
