@@ -63,10 +63,15 @@ class PassFloorBench::State {
     glBindVertexArray(b.vao_.id());
   }
   ~State() {
+    // An object deleted while bound lives until it is unbound: once the run bound its own, the
+    // name is gone (a test's program deleted at its end), and binding it would be an error.
+    const auto id = [](GLint name, GLboolean (*exists)(GLuint)) {
+      return name != 0 && exists(static_cast<GLuint>(name)) ? static_cast<GLuint>(name) : 0u;
+    };
     glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(fbo_));
-    glBindVertexArray(static_cast<GLuint>(vao_));
-    glUseProgram(static_cast<GLuint>(program_));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, id(fbo_, glIsFramebuffer));
+    glBindVertexArray(id(vao_, glIsVertexArray));
+    glUseProgram(id(program_, glIsProgram));
     for (int i = 0; i < 3; ++i)
       if (enabled_[i]) glEnable(kCaps[i]);
   }

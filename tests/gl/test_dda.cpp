@@ -61,7 +61,7 @@ TEST(Dda, RaysBackTowardsTheCameraStayFinite) {
   constexpr int w = 97, h = 55;
   Renderer r(s, w, h);
   for (const char* stride : {"1", "7"})
-    for (const char* rough : {"-1", "0.6"}) {
+    for (const char* rough : {"auto", "0.6"}) {
       auto dda = create_technique("dda");
       apply_assignments(*dda, {std::string("dda.stride=") + stride, "dda.jitter=true", "dda.samples=4",
                                std::string("dda.roughness=") + rough});

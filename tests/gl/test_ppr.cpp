@@ -127,7 +127,7 @@ TEST(Ppr, HardCasesStayFinite) {
   apply_assignments(*ppr, {"ppr.samples=4", "ppr.fallback=none"});
   ppr->load(r.shaders());
   for (const Camera& cam : scene.cameras)
-    for (const char* roughness : {"-1", "0.6"}) {
+    for (const char* roughness : {"auto", "0.6"}) {
       apply_assignments(*ppr, {std::string("ppr.roughness=") + roughness});
       r.render(cam, *ppr, ViewMode::Final, nullptr);
       const RgbaImageF refl = r.read_texture(r.reflection());
