@@ -130,8 +130,13 @@ void Viewer::on_Pause(const std::string&) { playing_ = false; }
 
 void Viewer::on_Truth(const std::string& a) {
   if (a == "now") {
-    for (int i = 0; i < 2; ++i)
-      if (on_demand(i) && !side_current(i)) sides_[i].request = 2;
+    bool any = false;
+    for (int i = 0; i < active_sides(); ++i) {  // A, B, and the grid's truth when shown
+      if (!on_demand(i)) continue;
+      any = true;
+      if (!side_current(i)) sides_[i].request = 2;
+    }
+    if (!any) set_status("truth now: no side shown is the reference (make it A or B, or show the grid)", false);
   } else {
     truth_policy_ = a == "live" ? TruthPolicy::Live : a == "rest" ? TruthPolicy::Rest : TruthPolicy::Manual;
   }

@@ -170,4 +170,8 @@ def pixels(path):  # the PNG's decompressed rows (both shots are written alike)
     return zlib.decompress(out)
 assert pixels('shot1.png') == pixels('shot2.png'), 'the second window-shot shows another frame'
 PY
+# `truth now` with no reference shown says so (it did nothing without a word).
+printf 'technique-b hiz\ncompare split\nframes 1\ntruth now\nstatus\n' > truth-now.txt
+view --scene cornell --size 160x90 --script truth-now.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+grep -q '"message":"truth now: no side shown is the reference' log.txt || { echo "truth now: no message"; cat log.txt; exit 1; }
 echo "viewer script ok"
