@@ -363,6 +363,8 @@ void Viewer::side_panel(double dt) {
                          truth_state().c_str());
     } else if (view_ != VIEW_FINAL) {
       ImGui::TextDisabled("PSNR A vs B: in the final view only");
+    } else if (!side_current(0) || !side_current(1)) {  // e.g. the image resized under a panel drag
+      ImGui::TextDisabled("PSNR A vs B: - (the next frame has it)");
     } else {
       ImGui::TextDisabled("PSNR A vs B: - (no reflective or glass pixels)");
     }
