@@ -39,8 +39,15 @@ ShaderSource ShaderSource::with_defines(std::vector<std::string> defines) const 
 
 std::string ShaderSource::read(const std::string& path) const {
   if (dir_) {
-    std::ifstream in(*dir_ / path, std::ios::binary);
-    if (!in) throw InputError("shader file '" + (*dir_ / path).string() + "' does not exist (the --shaders directory lacks it).");
+    // Shader names are relative to the directory and stay inside it, as the embedded copy's do.
+    const std::filesystem::path rel = std::filesystem::path(path).lexically_normal();
+    if (rel.is_absolute() || rel.empty() || *rel.begin() == "..")
+      throw InputError("shader file '" + path + "' is outside the --shaders directory.");
+    std::error_code ec;
+    if (std::filesystem::exists(*dir_ / rel, ec) && !std::filesystem::is_regular_file(*dir_ / rel, ec))
+      throw InputError("shader file '" + (*dir_ / rel).string() + "' is not a regular file.");
+    std::ifstream in(*dir_ / rel, std::ios::binary);
+    if (!in) throw InputError("shader file '" + (*dir_ / rel).string() + "' does not exist (the --shaders directory lacks it).");
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();

@@ -1,8 +1,12 @@
 // Shader source handling without GL: info-log mapping and include expansion.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "core/errors.h"
 #include "gl/program.h"
+#include "input_error.h"
 
 using namespace ssr;
 
@@ -24,4 +28,25 @@ TEST(ShaderSource, EmbeddedExpansionHasVersionFirstAndSharedHeaders) {
   EXPECT_NE(std::find(files.begin(), files.end(), "shared/frame.h"), files.end());
   EXPECT_EQ(text.find("#include \""), std::string::npos);  // <...> ones sit in C++-only blocks
   EXPECT_THROW(src.read("does/not/exist.glsl"), RuntimeError);
+}
+
+// A --shaders directory is the whole source: an include that climbs out of it, or names a
+// directory, is refused in one sentence (it read any file the path reached).
+TEST(ShaderSource, DirectoryIncludesStayInside) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ssrlab-shaders-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "render" / "sub.glsl");
+  std::ofstream(dir / "render" / "up.comp") << "#include \"../../etc/passwd\"\n";
+  std::ofstream(dir / "render" / "abs.comp") << "#include \"/etc/passwd\"\n";
+  std::ofstream(dir / "render" / "dir.comp") << "#include \"render/sub.glsl\"\n";
+  std::ofstream(dir / "render" / "ok.comp") << "#include \"render/../render/inc.glsl\"\nvoid main() {}\n";
+  std::ofstream(dir / "render" / "inc.glsl") << "const int k = 1;\n";
+  const gl::ShaderSource src(dir);
+  std::vector<std::string> files;
+  test::expect_message(test::input_error([&] { src.expand("render/up.comp", {}, files); }), {"outside the --shaders directory"});
+  test::expect_message(test::input_error([&] { src.expand("render/abs.comp", {}, files); }), {"outside the --shaders directory"});
+  test::expect_message(test::input_error([&] { src.expand("render/dir.comp", {}, files); }), {"not a regular file"});
+  EXPECT_NE(src.expand("render/ok.comp", {}, files).find("const int k = 1;"), std::string::npos);
+  fs::remove_all(dir);
 }
