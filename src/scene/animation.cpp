@@ -188,18 +188,15 @@ Camera camera_at(const CameraPath& path, float time, const Camera& base) {
     c.target = c.position + (a.target - a.position);
   // Or look along the up vector (a camera passing over its target), where the view has no roll:
   // there the top of the image points where the keys head, across the up vector.
-  const auto along_up = [&](glm::vec3 d) {
-    return glm::length(glm::cross(d, c.up)) < 1e-6f * glm::length(d) * glm::length(c.up);
-  };
-  if (along_up(c.target - c.position)) {
+  if (up_along_view(c.target - c.position, c.up)) {
     const glm::vec3 up = glm::normalize(c.up);
     for (const CameraKey* key : {&a, &b}) {
       const glm::vec3 d = key->target - key->position;
-      if (along_up(d)) continue;
+      if (up_along_view(d, up)) continue;
       c.up = d - glm::dot(d, up) * up;
       break;
     }
-    if (along_up(c.target - c.position))  // both keys along it too (validation refuses those)
+    if (up_along_view(c.target - c.position, c.up))  // both keys along it too (validation refuses those)
       c.up = glm::abs(up.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
   }
   return c;

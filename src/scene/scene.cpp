@@ -69,8 +69,7 @@ void validate_animation(const Scene& s) {
       if (!finite(k.position) || !finite(k.target)) fail(s, kw + "has a non-finite vector");
       const glm::vec3 fwd = k.target - k.position;
       if (glm::length(fwd) < 1e-6f) fail(s, kw + "target equals its position");
-      if (!s.cameras.empty() && glm::length(glm::cross(fwd, s.cameras[0].up)) <
-                                    1e-6f * glm::length(fwd) * glm::length(s.cameras[0].up))
+      if (!s.cameras.empty() && up_along_view(fwd, s.cameras[0].up))
         fail(s, kw + "view direction is parallel to the default camera's up vector");
       if (!finite(k.fov_y_deg) || k.fov_y_deg <= 1.0f || k.fov_y_deg >= 179.0f)
         fail(s, kw + "fov must be in (1,179) degrees");
@@ -212,7 +211,7 @@ void validate(const Scene& s) {
       fail(s, where + "has a non-finite vector");
     const glm::vec3 fwd = c.target - c.position;
     if (glm::length(fwd) < 1e-6f) fail(s, where + "target equals its position");
-    if (glm::length(glm::cross(fwd, c.up)) < 1e-6f * glm::length(fwd) * glm::length(c.up))
+    if (up_along_view(fwd, c.up))
       fail(s, where + "up vector is parallel to the view direction");
     if (!finite(c.fov_y_deg) || c.fov_y_deg <= 1.0f || c.fov_y_deg >= 179.0f)
       fail(s, where + "fov must be in (1,179) degrees");

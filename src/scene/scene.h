@@ -81,6 +81,12 @@ struct Camera {
   float far_plane = 200.0f; // > near_plane
 };
 
+// A view along `dir` with this `up` has no roll to form (up parallel to the view direction, to
+// a relative 1e-6): what scene validation refuses and camera paths steer around.
+inline bool up_along_view(const glm::vec3& dir, const glm::vec3& up) {
+  return glm::length(glm::cross(dir, up)) < 1e-6f * glm::length(dir) * glm::length(up);
+}
+
 struct Environment {
   enum class Type { Sky, Constant };
   Type type = Type::Sky;

@@ -371,8 +371,7 @@ Camera read_camera(const JsonReader& r, const json& j, const std::string& where,
   if (!(cam.far_plane > cam.near_plane)) r.fail_at(where + ".far", "must be greater than near");
   if (glm::length(cam.target - cam.position) < 1e-6f)
     r.fail_at(where + ".target", "must differ from the position");
-  if (glm::length(glm::cross(glm::normalize(cam.target - cam.position), cam.up)) <
-      1e-6f * glm::length(cam.up))
+  if (up_along_view(cam.target - cam.position, cam.up))
     r.fail_at(where + ".up", "must not be parallel to the view direction");
   return cam;
 }
