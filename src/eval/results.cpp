@@ -1,8 +1,6 @@
 // Result records and their writers (ARCHITECTURE §6, §7).
 #include "eval/results.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <charconv>

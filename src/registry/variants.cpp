@@ -82,9 +82,9 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
       if (split_assignment(set).first == key)
         throw InputError("'" + key + "' is both set (--set) and swept (--sweep).");
     std::vector<std::string> list = split_list(values, "sweep");
-    for (std::size_t i = 0; i < list.size(); ++i)
-      if (std::find(list.begin(), list.begin() + static_cast<long>(i), list[i]) != list.begin() + static_cast<long>(i))
-        throw InputError("--sweep '" + key + "' lists the value '" + list[i] + "' twice.");
+    std::set<std::string> listed;
+    for (const std::string& v : list)
+      if (!listed.insert(v).second) throw InputError("--sweep '" + key + "' lists the value '" + v + "' twice.");
     sweep_of[technique_of(key)].push_back({key, std::move(list)});
   }
 

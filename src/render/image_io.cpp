@@ -1,7 +1,5 @@
 #include "render/image_io.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -24,7 +22,6 @@ ImageFormat image_format_for(const fs::path& path) {
 }
 
 namespace {
-fs::path temp_path_for(const fs::path& path) { return files::temp_path_beside(path); }
 void commit(const fs::path& tmp, const fs::path& path) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
@@ -36,7 +33,7 @@ void commit(const fs::path& tmp, const fs::path& path) {
 }  // namespace
 
 void write_file_atomic(const fs::path& path, const void* bytes, std::size_t size) {
-  const fs::path tmp = temp_path_for(path);
+  const fs::path tmp = files::temp_path_beside(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw RuntimeError("cannot write '" + path.string() + "' (directory missing or not writable).");
   const bool ok = std::fwrite(bytes, 1, size, f) == size;
@@ -62,7 +59,7 @@ void write_png(const fs::path& path, const RgbaImage8& image) {
 }
 
 void write_exr(const fs::path& path, const RgbaImageF& image) {
-  const fs::path tmp = temp_path_for(path);
+  const fs::path tmp = files::temp_path_beside(path);
   const char* err = nullptr;
   const int rc = SaveEXR(image.pixels.data(), image.width, image.height, 4, /*fp16=*/1,
                          tmp.c_str(), &err);

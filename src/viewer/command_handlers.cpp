@@ -174,7 +174,7 @@ void Viewer::on_Status(const std::string&) {
   j["error"] = status_error_;
   j["device"] = window_->info().renderer;
   j["clock"] = clock_ == gl::PassTimer::Clock::Gpu ? "gpu" : "cpu";
-  j["frame_ms"] = frame_ms_.empty() ? 0.0 : frame_ms_.back();
+  j["frame_ms"] = shown_frame_ms(0.0);
   j["image"] = {image_w_, image_h_};
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
