@@ -37,7 +37,8 @@ def labels_of(run):
 
 
 def fmt(v, digits=2):
-    return f"{v:.{digits}f}"
+    """A figure, or '-' where it is null (an empty pixel set has none)."""
+    return "-" if v is None else f"{v:.{digits}f}"
 
 
 def load(path, need_regions=False):
@@ -72,7 +73,7 @@ def main(paths):
                 e = r["error"]
                 print(f"| {label} | {fmt(t['median'], 3)} | {fmt(t['min'], 3)} "
                       f"| {fmt(t['max'], 3)} | {fmt(r['time_over_floor'], 1)} | {fmt(e['psnr'])} "
-                      f"| {fmt(e['psnr_traceable'])} | {e['coverage'] * 100:.1f}% | {r['nonfinite']} |")
+                      f"| {fmt(e['psnr_traceable'])} | {pct(e['coverage'])} | {r['nonfinite']} |")
             print()
 
 
@@ -164,7 +165,7 @@ def equal_error(paths, baseline="linear-binary", slack=0.25):
             steps_key = baseline + ".linear_steps"
             target = max(base, key=lambda r: r["params"].get(steps_key, 0))["error"]["psnr_traceable"]
             def fastest(rs):
-                ok = [r for r in rs if r["error"]["psnr_traceable"] >= target - slack]
+                ok = [r for r in rs if (r["error"]["psnr_traceable"] or float("-inf")) >= target - slack]
                 return min(ok, key=lambda r: r["time_ms"]["median"]) if ok else None
             ref = fastest(base)
             label = dict(zip(map(id, run["results"]), labels_of(run)))

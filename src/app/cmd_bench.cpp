@@ -116,7 +116,8 @@ void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
         pareto.series.push_back({name, {}, {}, t.preset.empty()});
       }
       PlotSeries& s = pareto.series[series_of[name]];
-      s.points.push_back({t.time_ms.median, t.error.psnr_traceable});
+      if (!t.error.psnr_traceable) continue;  // nothing traceable: no point to plot
+      s.points.push_back({t.time_ms.median, *t.error.psnr_traceable});
       s.labels.push_back(t.preset.empty() ? t.label.substr(t.technique.size()) : t.preset);
     }
     // Each technique's curve is its Pareto front (sorted by time, each point better than every

@@ -67,7 +67,7 @@ int run_compare(const CompareOptions& o) {
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
   FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
+  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
   auto ctx = open_gl(o.gl, {{w, h}});
   const std::string clock = ctx->info().software ? "cpu" : "gpu";
   Renderer renderer(scene, w, h);
@@ -90,7 +90,7 @@ int run_compare(const CompareOptions& o) {
     const ErrorMetrics& e = ev.result.error;
     const std::string label = v.label() + "  " + fmt("%.2f ms ", ev.result.time_ms.median) + clock;
     top.push_back({label, to_rgba8(ev.score.display)});
-    bottom.push_back({"diff vs truth, PSNR " + fmt("%.1f dB", e.psnr),
+    bottom.push_back({"diff vs truth, PSNR " + (e.psnr ? fmt("%.1f dB", *e.psnr) : std::string("- (nothing reflects)")),
                       heat_map(ev.score.display, frame.truth(), frame.classes())});
     run.results.push_back(ev.result);
     // The two oracles check each other (ARCHITECTURE §5) wherever planar runs.
@@ -124,9 +124,9 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
   c->add_option("--out", o->out, "The labelled grid (.png).")->required();
-  c->add_option("--json", o->json, "Results JSON (ARCHITECTURE §7).");
+  c->add_option("--json", o->json, "Results JSON (README, Verdicts: every field).");
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--regions", o->regions,
                 "The breakdown's rows (implies --breakdown): all,planar,reflector:N,other,mirror,glossy,rough,refractive.");

@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "eval/grid.h"
 #include "eval/metrics.h"
+#include "eval/results.h"
 #include "eval/runner.h"
 #include "gl/gl.h"
 #include "reference/reference.h"
@@ -129,7 +130,7 @@ int run_render(const RenderOptions& o) {
   auto reference = scored_view ? create_technique(truth_name()) : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
   FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
+  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
   if (scored_view && technique_info(technique_name).truth)
     throw InputError("--view " + o.view + " scores a technique against the reference; name another technique.");
@@ -148,10 +149,10 @@ int run_render(const RenderOptions& o) {
     const ScoredFrame::Score s = frame.score(*technique);
     if (diff_view) {
       write_png(o.out, heat_map(s.display, frame.truth(), frame.classes()));
-      std::printf("wrote %s (%dx%d, scene %s, technique %s, view difference, 0.25 = hottest): PSNR %.2f dB, "
-                  "traceable %.2f dB\n",
-                  o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), s.error.psnr,
-                  s.error.psnr_traceable);
+      std::printf("wrote %s (%dx%d, scene %s, technique %s, view difference, 0.25 = hottest): PSNR %s dB, "
+                  "traceable %s dB\n",
+                  o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), db_text(s.error.psnr).c_str(),
+                  db_text(s.error.psnr_traceable).c_str());
     } else {
       write_png(o.out, hit_class_map(frame.hit_classes_of(s, *technique), frame.truth()));
       const RegionFigures* all = s.breakdown.find("all");
@@ -221,7 +222,7 @@ Command add_render_command(CLI::App& app) {
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
   for (const RenderOnlyViewInfo& v : kRenderOnlyViews) views += "|" + std::string(v.name) + " (" + v.description + ")";
   c->add_option("--view", o->view, "What to write: " + views + ".")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");
   return {c, [o] { return run_render(*o); }};

@@ -136,7 +136,7 @@ int run_sequence_command(const SequenceOptions& o) {
   } cleanup{frames_tmp};
 
   FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure);  // the table's range, before any GL
+  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
   auto ctx = open_gl(o.gl, {{w, h}});
   const gl::ContextInfo& gi = ctx->info();
   Renderer renderer(scene, w, h);
@@ -190,7 +190,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
   c->add_option("--fps", o->fps, "Frames per second of scene time.")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20] (frame_settings_table).")->capture_default_str();
+  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
   c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();
   c->add_option("--out", o->out, "A new (or empty) directory for the labelled PNG frames.");
   c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/gtc/packing.hpp>
+
 #include "core/errors.h"
 
 namespace ssr {
@@ -82,6 +84,7 @@ struct ClassAccum {
       f.psnr_reflection_ideal = refl_ideal.psnr();
       f.coverage = share(claimed, truth.n);
       f.correct_coverage = share(correct, truth.n);
+      f.correct_pixels = correct;
       if (has_noise_floor) f.noise_floor_psnr = noise.psnr();
     } else {
       f.false_hit_rate = share(false_claims, truth.n);
@@ -106,6 +109,13 @@ std::string Region::name() const {
   return "?";
 }
 
+float as_stored_roughness(float r) { return glm::unpackHalf1x16(glm::packHalf1x16(r)); }
+
+namespace {
+const float kMirrorBound = as_stored_roughness(kMirrorBandBelow);
+const float kRoughBound = as_stored_roughness(kRoughBandAbove);
+}  // namespace
+
 bool Region::contains(const PixelLabels& l, std::size_t i) const {
   if (l.classes[i] == PixelClass::NotReflective) return false;
   if (l.is_glass(i)) return kind == RegionKind::All || kind == RegionKind::Refractive;
@@ -115,9 +125,9 @@ bool Region::contains(const PixelLabels& l, std::size_t i) const {
     case RegionKind::Planar: return l.reflector[i] > 0;
     case RegionKind::Reflector: return l.reflector[i] == reflector;
     case RegionKind::Other: return l.reflector[i] == 0;
-    case RegionKind::Mirror: return r < kMirrorBandBelow;
-    case RegionKind::Glossy: return r >= kMirrorBandBelow && r <= kRoughBandAbove;
-    case RegionKind::Rough: return r > kRoughBandAbove;
+    case RegionKind::Mirror: return r < kMirrorBound;
+    case RegionKind::Glossy: return r >= kMirrorBound && r <= kRoughBound;
+    case RegionKind::Rough: return r > kRoughBound;
     case RegionKind::Refractive: return false;
   }
   return false;
@@ -206,7 +216,7 @@ Breakdown compute_breakdown(const PixelLabels& labels, const TechniqueImages& t,
         a.ideal.add(px(t.final, i), px(r.ideal, i));
         a.refl_ideal.add(px(t.reflected, i), px(r.ideal_reflected, i));
         a.correct += h == HitClass::Correct;
-        if (r.ideal_at_samples && labels.roughness[i] >= kMirrorBandBelow && !labels.is_glass(i)) {
+        if (r.ideal_at_samples && labels.roughness[i] >= kMirrorBound && !labels.is_glass(i)) {
           a.noise.add(px(r.ideal_at_samples, i), px(r.ideal, i));
           any_rough_traceable = true;
         }

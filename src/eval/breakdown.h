@@ -16,9 +16,13 @@
 
 namespace ssr {
 
-// Roughness bands on perceptual roughness: mirror < 0.05 <= glossy <= 0.4 < rough.
+// Roughness bands on perceptual roughness: mirror < 0.05 <= glossy <= 0.4 < rough. They are
+// applied to the roughness as the G-buffer holds it, a half float (0.05 is 0.049988 there), with
+// the bounds rounded the same way: a material authored at 0.05 is glossy (corridor's floor), and
+// its pixels have a noise floor.
 constexpr float kMirrorBandBelow = 0.05f;
 constexpr float kRoughBandAbove = 0.4f;
+float as_stored_roughness(float r);  // r as the G-buffer's half float holds it
 
 // A technique "claims a hit" where its confidence exceeds this (as `coverage` does).
 constexpr float kHitConfidence = 0.5f;
@@ -33,7 +37,7 @@ struct PixelLabels {
   int width = 0, height = 0;
   std::vector<PixelClass> classes;       // the reference's class (NotReflective: no figure)
   std::vector<std::uint16_t> reflector;  // 0 = not on a planar reflector, else 1-based id
-  std::vector<float> roughness;          // perceptual roughness from the G-buffer
+  std::vector<float> roughness;          // perceptual roughness as the G-buffer holds it (half float)
   // Pixels seen through a transparent surface (empty: none). Their class and figures are their
   // refraction's: they belong to "all" and "refractive" only.
   std::vector<bool> glass;
@@ -100,6 +104,7 @@ struct ClassFigures {
   std::optional<double> psnr_reflection_ideal;  // reflected radiance vs the ideal's (traceable)
   std::optional<double> coverage;               // traceable: claimed share
   std::optional<double> correct_coverage;       // traceable: claimed with the right colour
+  std::size_t correct_pixels = 0;               // traceable: the count behind correct_coverage
   std::optional<double> false_hit_rate;         // missing / sky: claimed share
   // Traceable: the ideal at the technique's sample count vs the converged ideal, over the
   // class's pixels that are not mirrors (null when none is, or no sample count is known).

@@ -1,5 +1,6 @@
-// Error metrics of ARCHITECTURE §5. Every output is finite: a non-finite input value counts as the
-// maximal error (1 per channel on images in [0,1]) and is counted in `nonfinite`.
+// Error metrics of ARCHITECTURE §5. Every output is finite, or absent over an empty pixel set: a
+// non-finite input value counts as the maximal error (1 per channel on images in [0,1]) and is
+// counted in `nonfinite`.
 #include "eval/metrics.h"
 
 #include <algorithm>
@@ -49,8 +50,8 @@ double pixel_sq_error(const RgbaImageF& a, const RgbaImageF& b, std::size_t i) {
          channel_sq_error(pa[2], pb[2]);
 }
 
-double rmse_of(double sum_sq, std::size_t pixels) {
-  if (pixels == 0) return 0.0;
+std::optional<double> rmse_of(double sum_sq, std::size_t pixels) {
+  if (pixels == 0) return std::nullopt;
   const double r = std::sqrt(sum_sq / (3.0 * static_cast<double>(pixels)));
   return std::isfinite(r) ? r : 1.0;  // unreachable for finite sums; keeps the promise anyway
 }
@@ -72,7 +73,12 @@ double psnr_from_rmse(double rmse) {
   return std::clamp(p, -kPsnrCap, kPsnrCap);
 }
 
-double rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
+std::optional<double> psnr_from_rmse(const std::optional<double>& rmse) {
+  if (!rmse) return std::nullopt;
+  return psnr_from_rmse(*rmse);
+}
+
+std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
                   bool (*mask)(PixelClass)) {
   check_same_size(a, "a", b, "b");
   const std::size_t n = pixel_count(a);
@@ -144,9 +150,7 @@ ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& trut
   m.rmse_traceable = rmse_of(sum_traceable, m.traceable);
   m.psnr_traceable = psnr_from_rmse(m.rmse_traceable);
   m.rmse_missing = rmse_of(sum_missing, m.missing);
-  m.coverage = m.traceable == 0
-                   ? 0.0
-                   : static_cast<double>(covered) / static_cast<double>(m.traceable);
+  if (m.traceable > 0) m.coverage = static_cast<double>(covered) / static_cast<double>(m.traceable);
   return m;
 }
 
@@ -162,7 +166,6 @@ std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const
     sum += pixel_sq_error(a, b, i);
     ++count;
   }
-  if (count == 0) return std::nullopt;
   return psnr_from_rmse(rmse_of(sum, count));
 }
 

@@ -10,11 +10,13 @@
 
 namespace ssr {
 
+// A figure over an empty set of pixels is nullopt (`null` in JSON, `-` in tables), never 100 dB
+// or 0%: a frame with nothing reflective has no PSNR.
 struct ErrorMetrics {
-  double rmse = 0, psnr = 0;                        // technique vs truth, all reflective pixels
-  double rmse_traceable = 0, psnr_traceable = 0;    // technique vs screen-space ideal, traceable
-  double rmse_missing = 0;                          // technique vs truth, missing pixels
-  double coverage = 0;                              // traceable pixels with confidence > 0.5
+  std::optional<double> rmse, psnr;                      // technique vs truth, all reflective pixels
+  std::optional<double> rmse_traceable, psnr_traceable;  // technique vs screen-space ideal, traceable
+  std::optional<double> rmse_missing;                    // technique vs truth, missing pixels
+  std::optional<double> coverage;                        // traceable pixels with confidence > 0.5
   std::size_t nonfinite = 0;                        // non-finite values in the inputs given
   std::size_t reflective = 0, traceable = 0, missing = 0, sky = 0;  // pixel counts
 };
@@ -22,10 +24,11 @@ struct ErrorMetrics {
 // PSNR for a peak of 1. Identical images (rmse 0) give kPsnrCap, so results stay finite JSON.
 constexpr double kPsnrCap = 100.0;
 double psnr_from_rmse(double rmse);
+std::optional<double> psnr_from_rmse(const std::optional<double>& rmse);
 
-// Root mean square over the RGB channels of the pixels where mask(i) holds; 0 when none.
+// Root mean square over the RGB channels of the pixels where mask(i) holds; nullopt when none.
 // `a` and `b` are RGBA images of the same size (alpha ignored).
-double rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
+std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<PixelClass>& cls,
                   bool (*mask)(PixelClass));
 
 // All metrics at once. technique/truth/ideal: tone-mapped final images in [0,1];

@@ -25,6 +25,8 @@ std::string number_text(double v) {
   const auto r = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
+// An absent figure (an empty pixel set) is an empty CSV field.
+std::string number_text(const std::optional<double>& v) { return v ? number_text(*v) : std::string(); }
 
 std::string fixed_text(double v, int decimals) {
   char buf[64];
@@ -90,7 +92,7 @@ nlohmann::json run_json(const RunResults& run) {
       {"size", {run.width, run.height}},
       {"scene", run.scene},
       {"results", std::move(results)},
-      {"inherent_psnr", run.inherent_psnr},
+      {"inherent_psnr", optional_json(run.inherent_psnr)},
       {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
                     {"missing", optional_json(run.inherent.missing)},
                     {"sky", optional_json(run.inherent.sky)}}},
@@ -140,6 +142,8 @@ std::string pad_right(const std::string& s, std::size_t w) {
 
 }  // namespace
 
+std::string db_text(const std::optional<double>& v) { return v ? fixed_text(*v, 2) : std::string("-"); }
+
 nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 nlohmann::json device_json(const DeviceInfo& d) {
@@ -152,12 +156,12 @@ nlohmann::json device_json(const DeviceInfo& d) {
 
 nlohmann::json error_json(const ErrorMetrics& e) {
   return nlohmann::json{
-      {"rmse", e.rmse},
-      {"psnr", e.psnr},
-      {"rmse_traceable", e.rmse_traceable},
-      {"psnr_traceable", e.psnr_traceable},
-      {"rmse_missing", e.rmse_missing},
-      {"coverage", e.coverage},
+      {"rmse", optional_json(e.rmse)},
+      {"psnr", optional_json(e.psnr)},
+      {"rmse_traceable", optional_json(e.rmse_traceable)},
+      {"psnr_traceable", optional_json(e.psnr_traceable)},
+      {"rmse_missing", optional_json(e.rmse_missing)},
+      {"coverage", optional_json(e.coverage)},
       {"reflective", e.reflective},
       {"traceable", e.traceable},
       {"missing", e.missing},
@@ -291,8 +295,6 @@ std::string format_table(const std::vector<std::string>& header,
   return out;
 }
 
-// A figure for the tables: "-" for an empty set.
-std::string db_text(const std::optional<double>& v) { return v ? fixed_text(*v, 2) : std::string("-"); }
 std::string percent_text(const std::optional<double>& v) {
   return v ? fixed_text(*v * 100.0, 1) + "%" : std::string("-");
 }
@@ -314,6 +316,15 @@ std::optional<double> false_hit_rate(const RegionFigures& f) {
   return claimed / static_cast<double>(n);
 }
 
+// Traceable pixels claimed with the right colour over every traceable pixel, as `cover` next to
+// it: a pixel the technique does not handle (ppr without fallback off its reflectors) is not
+// correct. The breakdown's own correct_coverage is over the pixels handled.
+std::optional<double> pooled_correct_coverage(const TechniqueResult& r) {
+  const RegionFigures* all = r.breakdown.find("all");
+  if (!all || r.error.traceable == 0) return std::nullopt;
+  return static_cast<double>(all->traceable.correct_pixels) / static_cast<double>(r.error.traceable);
+}
+
 std::string row_name(const TechniqueResult& r) {
   if (!r.label.empty()) return r.label;
   return r.preset.empty() ? r.technique : r.technique + " [" + r.preset + "]";
@@ -333,10 +344,10 @@ std::string results_table(const RunResults& run, const std::string& clock) {
         row_name(r),
         fixed_text(r.time_ms.median, 2),
         tof > 0.0 ? fixed_text(tof, 2) : std::string("-"),
-        fixed_text(r.error.psnr, 2),
-        r.error.traceable > 0 ? fixed_text(r.error.psnr_traceable, 2) : std::string("-"),
-        r.error.traceable > 0 ? fixed_text(r.error.coverage * 100.0, 1) + "%" : std::string("-"),
-        all ? percent_text(all->traceable.correct_coverage) : std::string("-"),
+        db_text(r.error.psnr),
+        db_text(r.error.psnr_traceable),
+        percent_text(r.error.coverage),
+        percent_text(pooled_correct_coverage(r)),
         region_cell(r, "planar", false),
         region_cell(r, "planar", true),
         region_cell(r, "other", false),
@@ -347,7 +358,7 @@ std::string results_table(const RunResults& run, const std::string& clock) {
   }
   std::string out = run.scene + " " + std::to_string(run.width) + "x" +
                     std::to_string(run.height) + ", inherent PSNR " +
-                    fixed_text(run.inherent_psnr, 2) + " dB (traceable " + db_text(run.inherent.traceable) +
+                    db_text(run.inherent_psnr) + " dB (traceable " + db_text(run.inherent.traceable) +
                     ", missing " + db_text(run.inherent.missing) + ", sky " + db_text(run.inherent.sky) + ")\n";
   out += format_table(header, rows);
   out += "trace dB: vs the screen-space ideal on traceable pixels; correct/ok: traceable pixels hit "

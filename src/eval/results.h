@@ -49,7 +49,7 @@ struct TechniqueResult {
 struct RunResults {  // one scene at one size
   std::string scene;
   int width = 0, height = 0;
-  double inherent_psnr = 0;  // ideal vs truth, once per scene
+  std::optional<double> inherent_psnr;  // ideal vs truth, once per scene (null: nothing reflects)
   std::vector<TechniqueResult> results;
   InherentFigures inherent;  // ideal vs truth per class
   std::optional<OracleAgreement> oracles;  // planar vs reference, when planar ran
@@ -83,6 +83,8 @@ std::string breakdown_table(const RunResults& run, const std::vector<std::string
 
 // A figure that may be absent: null when it is (and, as nlohmann writes them, when not finite).
 nlohmann::json optional_json(const std::optional<double>& v);
+// A dB figure for tables and messages: two decimals, "-" for an empty set.
+std::string db_text(const std::optional<double>& v);
 // {"renderer", "version", "clock"}.
 nlohmann::json device_json(const DeviceInfo& d);
 // The "error" object of one result (pooled figures).

@@ -46,7 +46,7 @@ class ScoredFrame {
   const PixelLabels& labels() const { return labels_; }
   // The G-buffer's normal-map flag per pixel (row 0 = top): the oracles skip those pixels.
   const std::vector<bool>& normal_mapped() const { return normal_mapped_; }
-  double inherent_psnr() const { return inherent_psnr_; }
+  std::optional<double> inherent_psnr() const { return inherent_psnr_; }
   InherentFigures inherent() const;
   std::size_t reference_rays() const { return rays_; }
   // The references as the breakdown takes them; `samples` > 0 adds the noise floor of a
@@ -64,7 +64,7 @@ class ScoredFrame {
   PixelLabels labels_;
   std::vector<bool> normal_mapped_;
   std::map<int, RgbaImageF> ideal_at_samples_;  // composited ideal at N samples a rough pixel
-  double inherent_psnr_ = 0;
+  std::optional<double> inherent_psnr_;
   std::size_t rays_ = 0;
 };
 

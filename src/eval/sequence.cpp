@@ -217,7 +217,9 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     for (const SequenceFrame& f : out.frames) {
       const SequenceTechniqueFrame& r = f.results[v];
       s.nonfinite += r.nonfinite;
-      if (f.truth) s.convergence.push_back(r.error ? std::optional<double>(r.error->psnr) : std::nullopt);
+      if (!f.truth) continue;
+      s.convergence.push_back(r.error ? r.error->psnr : std::nullopt);
+      s.convergence_frames.push_back(f.index);
     }
     out.summary.push_back(std::move(s));
   }
@@ -255,6 +257,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                                        {"change_ratio", optional_json(s.change_ratio)}}},
                        {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
                        {"convergence", convergence},
+                       {"convergence_frames", s.convergence_frames},
                        {"nonfinite", s.nonfinite}});
   }
   return {{"device", device_json(device)},
@@ -304,7 +307,7 @@ std::string sequence_svg(const SequenceResults& r) {
     PlotSeries e{r.summary[v].label, {}, {}, true}, f{r.summary[v].label, {}, {}, true};
     for (const SequenceFrame& fr : r.frames) {
       const SequenceTechniqueFrame& t = fr.results[v];
-      if (t.error) e.points.emplace_back(fr.index, t.error->psnr);
+      if (t.error && t.error->psnr) e.points.emplace_back(fr.index, *t.error->psnr);
       if (t.instability) f.points.emplace_back(fr.index, *t.instability);
     }
     error.series.push_back(std::move(e));

@@ -23,11 +23,18 @@ ParamSet frame_settings_params(FrameSettings& settings) {
   return ParamSet("frame", frame_settings_table(), &settings, &kDefaultSettings);
 }
 
-void set_frame_setting(FrameSettings& settings, const std::string& key, double value) {
+void set_frame_setting(FrameSettings& settings, const std::string& key, double value, const std::string& option) {
   ParamSet p = frame_settings_params(settings);
   const int i = p.find(key);
   if (i < 0) throw InputError("unknown frame setting '" + key + "'.");
-  p.set(static_cast<std::size_t>(i), value);
+  try {
+    p.set(static_cast<std::size_t>(i), value);
+  } catch (const InputError& e) {
+    // The table's sentence, naming what the user typed: "--exposure must be in [-20, 20], got inf."
+    const std::string named = "parameter '" + p.key(static_cast<std::size_t>(i)) + "'", what = e.what();
+    if (option.empty() || what.rfind(named, 0) != 0) throw;
+    throw InputError(option + what.substr(named.size()));
+  }
 }
 
 Technique::Technique() {

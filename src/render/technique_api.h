@@ -99,8 +99,9 @@ struct FrameSettings {
 // and describe them through it (prefix "frame").
 std::span<const ParamDesc> frame_settings_table();
 ParamSet frame_settings_params(FrameSettings& settings);
-// Sets one ("exposure", ...) through the table: InputError naming the key and range.
-void set_frame_setting(FrameSettings& settings, const std::string& key, double value);
+// Sets one ("exposure", ...) through the table: InputError naming the key (or `option`, the
+// command-line option that carried the value, e.g. "--exposure") and the range.
+void set_frame_setting(FrameSettings& settings, const std::string& key, double value, const std::string& option = "");
 
 // Everything a technique may read for one frame, and its outputs. The frame's inputs are bound
 // at their named slots when run() is called; rebind() restores them (after a technique drew with

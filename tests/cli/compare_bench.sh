@@ -11,6 +11,25 @@ trap 'rm -rf "$tmp"' EXIT
   --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
 "$SSRLAB" compare --scene glass --size 64x36 --frames 1 --out "$tmp/glass.png" --set reference.samples=4
+# A scene where nothing reflects: every pooled figure is null (no pixel to score), never 100 dB.
+cat > "$tmp/matte.json" <<'JSON'
+{"name": "matte", "materials": {"matte": {"albedo": [0.5, 0.5, 0.5], "roughness": 1.0, "reflectance": 0.0}},
+ "primitives": [{"type": "plane", "name": "floor", "size": [8, 8], "material": "matte"},
+                {"type": "box", "name": "b", "extents": [1, 1, 1], "material": "matte", "translate": [0, 0.5, 0]}],
+ "lights": [{"type": "directional", "direction": [-0.4, -1.0, -0.35], "intensity": 2.5}],
+ "cameras": [{"name": "default", "position": [2.2, 1.6, 3.2], "target": [0.0, 0.3, 0.0], "fov_y": 50}]}
+JSON
+"$SSRLAB" compare --scene "$tmp/matte.json" --size 48x27 --frames 1 --techniques hiz,none --out "$tmp/matte.png" \
+  --json "$tmp/matte_result.json" > "$tmp/matte.txt"
+if grep -q "100.00" "$tmp/matte.txt"; then echo "nothing reflects, yet a figure of 100 dB:"; cat "$tmp/matte.txt"; exit 1; fi
+python3 - "$tmp/matte_result.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["inherent_psnr"] is None, j["inherent_psnr"]
+for r in j["results"]:
+    e = r["error"]
+    assert e["reflective"] == 0 and all(e[k] is None for k in ("rmse", "psnr", "psnr_traceable", "coverage")), e
+PY
 # Shaders from a directory (another revision's, to time it): the JSON's revision says so.
 "$SSRLAB" bench --scenes gallery --sizes 32x18 --techniques linear --set reference.samples=4 --frames 1 --warmup 0 \
   --shaders "$(cd "$(dirname "$0")/../../shaders" && pwd)" --json "$tmp/bench_shaders.json" >/dev/null

@@ -253,7 +253,7 @@ bad linear.max_steps render --set linear.max_steps=1.5 $S --out "$out/x.png"
 bad linear.max_steps render --set linear.max_steps= $S --out "$out/x.png"
 for v in inf -inf 1e400 0x10 " 1"; do bad linear.thickness render --set "linear.thickness=$v" $S --out "$out/x.png"; done
 bad linear.depth_interp render --set linear.depth_interp=maybe $S --out "$out/x.png"
-bad "exposure" render --exposure inf $S --out "$out/x.png"
+bad "--exposure must be in" render --exposure inf $S --out "$out/x.png"
 bad "unknown subcommand 'nosuch'" nosuch
 bad "--nosuch" render --nosuch $S --out "$out/x.png"
 bad "--scene" render $S --out "$out/x.png" --scene

@@ -12,6 +12,7 @@ seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/b.json" > /dev/null
 seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > /dev/null
 seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > /dev/null
+seq --scene cornell --frames 5 --truth-every 3 --techniques linear --json "$tmp/every3.json" > /dev/null
 seq --scene cornell --path still --frames 2 --techniques stochastic,hiz --sweep stochastic.temporal=false,true \
   --sweep hiz.denoise=false,true --json "$tmp/sweep.json" > /dev/null
 
@@ -35,7 +36,7 @@ for s in a["summary"]:
     assert set(s["instability"]) >= {"mean", "p95", "change_mean", "truth_change_mean", "change_ratio"}
     assert set(s["ghosting"]) >= {"disoccluded_psnr", "elsewhere_psnr"}
     assert s["instability"]["change_mean"] >= 0 and s["instability"]["truth_change_mean"] >= 0
-    assert len(s["convergence"]) == 8
+    assert len(s["convergence"]) == 8 and s["convergence_frames"] == list(range(8))
     assert s["instability"]["mean"] >= 0 and s["instability"]["p95"] >= s["instability"]["mean"] * 0.5
 # Run to run: the same numbers (the device and revision are the same too).
 b = json.load(open(f"{tmp}/b.json"))
@@ -47,6 +48,11 @@ for s in still["summary"]:
 # --truth-every 2: truth at frames 0, 1 (a pair), 2, 3.
 every = json.load(open(f"{tmp}/every.json"))
 assert [f["truth"] for f in every["frames"]] == [True, True, True, True]
+# --truth-every 3: truth at frames 0, 1, 3, 4; convergence has one entry each and names its frame.
+every3 = json.load(open(f"{tmp}/every3.json"))
+assert [f["index"] for f in every3["frames"] if f["truth"]] == [0, 1, 3, 4]
+s3 = every3["summary"][0]
+assert s3["convergence_frames"] == [0, 1, 3, 4] and len(s3["convergence"]) == 4, s3
 # --sweep: each value its own technique, labelled by it.
 sweep = json.load(open(f"{tmp}/sweep.json"))
 assert [s["label"] for s in sweep["summary"]] == ["stochastic temporal=false", "stochastic temporal=true",

@@ -26,12 +26,12 @@ TEST(Dda, MatchesDenseLinearBinary) {
       "gallery", w, h, "linear-binary",
       {"linear-binary.linear_steps=500", "linear-binary.max_distance=30", "linear-binary.thickness=0.15",
        "linear-binary.edge_fade=false"});
-  std::printf("dda max_steps=512 stride=1: psnr_traceable %.2f dB, coverage %.1f%%\n", dda.error.psnr_traceable,
-              dda.error.coverage * 100);
-  std::printf("linear-binary linear_steps=500: psnr_traceable %.2f dB, coverage %.1f%%\n", lb.error.psnr_traceable,
-              lb.error.coverage * 100);
+  std::printf("dda max_steps=512 stride=1: psnr_traceable %.2f dB, coverage %.1f%%\n", dda.error.psnr_traceable.value(),
+              dda.error.coverage.value() * 100);
+  std::printf("linear-binary linear_steps=500: psnr_traceable %.2f dB, coverage %.1f%%\n", lb.error.psnr_traceable.value(),
+              lb.error.coverage.value() * 100);
   EXPECT_EQ(dda.error.nonfinite, 0u);
-  EXPECT_GE(dda.error.psnr_traceable, lb.error.psnr_traceable - 0.5);
+  EXPECT_GE(dda.error.psnr_traceable.value(), lb.error.psnr_traceable.value() - 0.5);
   test::expect_no_gl_errors();
 }
 

@@ -105,9 +105,9 @@ TEST(Hiz, MatchesLinearBinaryWith500Steps) {
                                          "linear-binary.thickness=0.15", "linear-binary.edge_fade=false"});
   const auto hiz = test::score_technique("gallery", 192, 108, "hiz", {"hiz.max_distance=30"});
   std::printf("gallery 192x108 psnr_traceable: hiz %.2f dB (coverage %.1f%%), linear-binary/500 %.2f dB (coverage %.1f%%)\n",
-              hiz.error.psnr_traceable, hiz.error.coverage * 100, lb.error.psnr_traceable, lb.error.coverage * 100);
+              hiz.error.psnr_traceable.value(), hiz.error.coverage.value() * 100, lb.error.psnr_traceable.value(), lb.error.coverage.value() * 100);
   EXPECT_EQ(hiz.error.nonfinite, 0u);
-  EXPECT_GE(hiz.error.psnr_traceable, lb.error.psnr_traceable - 0.5);
+  EXPECT_GE(hiz.error.psnr_traceable.value(), lb.error.psnr_traceable.value() - 0.5);
   test::expect_no_gl_errors();
 }
 

@@ -53,7 +53,7 @@ PlanarScore score_on_planar(Renderer& r, ScoredFrame& frame, const std::string& 
   std::vector<float> conf(cls.size());
   for (std::size_t i = 0; i < conf.size(); ++i) conf[i] = s.reflection.pixels[i * 4 + 3];
   const ErrorMetrics e = compute_metrics(s.display, frame.truth(), frame.ideal(), cls, conf);
-  return {e.psnr_traceable, e.coverage, e.traceable, s.error.nonfinite};
+  return {e.psnr_traceable.value(), e.coverage.value(), e.traceable, s.error.nonfinite};
 }
 
 }  // namespace

@@ -513,7 +513,7 @@ TEST(Stochastic, LowersErrorOnCornellOverStillFrames) {
   spec.truth_every = 15;  // truth at frames 0, 1 and 15
   const SequenceResults res = run_sequence(r, variants, *reference, spec, {});
   for (std::size_t v = 0; v < variants.size(); ++v) {
-    const auto psnr = [&](int frame) { return res.frames.at(static_cast<std::size_t>(frame)).results.at(v).error->psnr; };
+    const auto psnr = [&](int frame) { return res.frames.at(static_cast<std::size_t>(frame)).results.at(v).error->psnr.value(); };
     std::printf("%s on cornell %dx%d: %.2f dB at frame 0, %.2f at 1, %.2f at 15\n", variants[v].label().c_str(), kW,
                 kH, psnr(0), psnr(1), psnr(15));
     // Measured (llvmpipe, bcf71d5 and since): stochastic 21.44 dB at frame 0, 22.61 at 1, 23.24 at
@@ -570,7 +570,7 @@ TEST(Stochastic, PreviousFrameHitsBuildTheSecondBounce) {
   spec.frames = 8;
   spec.truth_every = 7;  // truth at frames 0, 1 and 7
   const SequenceResults res = run_sequence(r, variants, *reference, spec, {});
-  const auto psnr = [&](std::size_t v, int f) { return res.frames.at(static_cast<std::size_t>(f)).results.at(v).error->psnr; };
+  const auto psnr = [&](std::size_t v, int f) { return res.frames.at(static_cast<std::size_t>(f)).results.at(v).error->psnr.value(); };
   std::printf("two-bounce truth: previous_frame=false %.2f -> %.2f dB, true %.2f -> %.2f dB\n", psnr(0, 0), psnr(0, 7),
               psnr(1, 0), psnr(1, 7));
   // Measured (llvmpipe, 96x64): false 8.91 -> 8.84 dB; true 8.91 -> 9.84 dB.

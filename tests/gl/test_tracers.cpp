@@ -50,17 +50,17 @@ TEST(Tracers, ErrorFallsAsStepsGrow) {
       a.push_back(std::string(c.steps_key) + "=" + std::to_string(n));
       const auto s = test::score_technique("gallery", kW, kH, c.technique, a);
       std::printf("%s %s=%d: psnr_traceable %.2f dB, coverage %.1f%%\n", c.technique, c.steps_key, n,
-                  s.error.psnr_traceable, s.error.coverage * 100);
+                  s.error.psnr_traceable.value(), s.error.coverage.value() * 100);
       EXPECT_EQ(s.error.nonfinite, 0u);
-      EXPECT_GE(s.error.psnr_traceable, prev - 0.05) << c.technique << " " << c.steps_key << "=" << n;
-      prev = std::max(prev, s.error.psnr_traceable);
+      EXPECT_GE(s.error.psnr_traceable.value(), prev - 0.05) << c.technique << " " << c.steps_key << "=" << n;
+      prev = std::max(prev, s.error.psnr_traceable.value());
     }
     // The sweep must actually matter: the largest budget beats the smallest by 3 dB or more.
     std::vector<std::string> lo = c.fixed, hi = c.fixed;
     lo.push_back(std::string(c.steps_key) + "=" + std::to_string(c.steps.front()));
     hi.push_back(std::string(c.steps_key) + "=" + std::to_string(c.steps.back()));
-    EXPECT_GE(test::score_technique("gallery", kW, kH, c.technique, hi).error.psnr_traceable,
-              test::score_technique("gallery", kW, kH, c.technique, lo).error.psnr_traceable + 3.0)
+    EXPECT_GE(test::score_technique("gallery", kW, kH, c.technique, hi).error.psnr_traceable.value(),
+              test::score_technique("gallery", kW, kH, c.technique, lo).error.psnr_traceable.value() + 3.0)
         << c.technique;
   }
   test::expect_no_gl_errors();
@@ -94,7 +94,7 @@ TEST(Tracers, HardCasesStayFiniteAndBounded) {
         }
         const auto s = test::score_technique(h.scene, 128, 72, c.technique, a, h.camera);
         EXPECT_EQ(s.error.nonfinite, 0u) << c.technique << " " << h.scene << "/" << h.camera << label;
-        EXPECT_GE(s.error.psnr, h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera << label;
+        EXPECT_GE(s.error.psnr.value(), h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera << label;
       }
   // The Roberts blend replaces the composite: still finite, confidence-weighted.
   const auto roberts = test::score_technique("gallery", 128, 72, "linear-binary",

@@ -66,14 +66,18 @@ TEST(Breakdown, RegionsCoverTheirPixels) {
   EXPECT_EQ(count("mirror"), 6);
   EXPECT_EQ(count("glossy"), 3);
   EXPECT_EQ(count("rough"), 3);
-  // The band edges: 0.05 is glossy, 0.4 is glossy, just above is rough.
+  // The band edges, on roughness as the G-buffer's half float holds it (0.05 is 0.049988 there,
+  // below a float 0.05): 0.05 is glossy, 0.4 is glossy, just above is rough, just below 0.05 mirror.
   PixelLabels e = l;
-  e.roughness[0] = 0.05f;
-  e.roughness[1] = 0.4f;
-  e.roughness[2] = 0.4001f;
+  e.roughness[0] = as_stored_roughness(0.05f);
+  e.roughness[1] = as_stored_roughness(0.4f);
+  e.roughness[2] = as_stored_roughness(0.4003f);
+  e.roughness[3] = as_stored_roughness(0.0499f);
+  EXPECT_LT(e.roughness[0], 0.05f);
   EXPECT_TRUE(parse_region("glossy", 2).contains(e, 0));
   EXPECT_TRUE(parse_region("glossy", 2).contains(e, 1));
   EXPECT_TRUE(parse_region("rough", 2).contains(e, 2));
+  EXPECT_TRUE(parse_region("mirror", 2).contains(e, 3));
 }
 
 TEST(Breakdown, UnknownRegionsAreInputErrors) {

@@ -38,13 +38,12 @@ std::vector<PixelClass> four_rows() {
   return cls;
 }
 
+// Every figure present (the 4x4 frames have pixels of each class) and finite.
 void expect_all_finite(const ErrorMetrics& m) {
-  EXPECT_TRUE(std::isfinite(m.rmse));
-  EXPECT_TRUE(std::isfinite(m.psnr));
-  EXPECT_TRUE(std::isfinite(m.rmse_traceable));
-  EXPECT_TRUE(std::isfinite(m.psnr_traceable));
-  EXPECT_TRUE(std::isfinite(m.rmse_missing));
-  EXPECT_TRUE(std::isfinite(m.coverage));
+  for (const std::optional<double>* v : {&m.rmse, &m.psnr, &m.rmse_traceable, &m.psnr_traceable, &m.rmse_missing, &m.coverage}) {
+    ASSERT_TRUE(v->has_value());
+    EXPECT_TRUE(std::isfinite(**v));
+  }
 }
 
 }  // namespace
@@ -83,11 +82,11 @@ TEST(Metrics, ConstantOffsetPointOne) {
   const auto tech = make_image(4, 4, 0.1f, 0.1f, 0.1f);
   std::vector<float> conf(16, 1.0f);
   const ErrorMetrics m = compute_metrics(tech, truth, truth, four_rows(), conf);
-  EXPECT_NEAR(m.rmse, 0.1, 1e-8);
-  EXPECT_NEAR(m.psnr, 20.0, 1e-6);
-  EXPECT_NEAR(m.rmse_traceable, 0.1, 1e-8);
-  EXPECT_NEAR(m.psnr_traceable, 20.0, 1e-6);
-  EXPECT_NEAR(m.rmse_missing, 0.1, 1e-8);
+  EXPECT_NEAR(m.rmse.value(), 0.1, 1e-8);
+  EXPECT_NEAR(m.psnr.value(), 20.0, 1e-6);
+  EXPECT_NEAR(m.rmse_traceable.value(), 0.1, 1e-8);
+  EXPECT_NEAR(m.psnr_traceable.value(), 20.0, 1e-6);
+  EXPECT_NEAR(m.rmse_missing.value(), 0.1, 1e-8);
 }
 
 // With an offset that floats represent exactly the answer is exact: the arithmetic is in double.
@@ -98,16 +97,16 @@ TEST(Metrics, ConstantOffsetExact) {
   for (std::size_t i = 0; i < 16; i += 2) set_rgb(tech, i, 0.375f, 0.375f, 0.375f);
   std::vector<float> conf(16, 1.0f);
   const ErrorMetrics m = compute_metrics(tech, truth, truth, four_rows(), conf);
-  EXPECT_NEAR(m.rmse, 0.125, 1e-15);
-  EXPECT_NEAR(m.psnr, 20.0 * std::log10(8.0), 1e-9);
-  EXPECT_NEAR(m.rmse_traceable, 0.125, 1e-15);
-  EXPECT_NEAR(m.rmse_missing, 0.125, 1e-15);
+  EXPECT_NEAR(m.rmse.value(), 0.125, 1e-15);
+  EXPECT_NEAR(m.psnr.value(), 20.0 * std::log10(8.0), 1e-9);
+  EXPECT_NEAR(m.rmse_traceable.value(), 0.125, 1e-15);
+  EXPECT_NEAR(m.rmse_missing.value(), 0.125, 1e-15);
 
   // 1/1024 on one channel only: mean of squares over 3 channels.
   auto tech2 = truth;
   for (std::size_t i = 0; i < 16; ++i) tech2.pixels[i * 4 + 1] = 0.5f + 1.0f / 1024.0f;
   const ErrorMetrics m2 = compute_metrics(tech2, truth, truth, four_rows(), conf);
-  EXPECT_NEAR(m2.rmse, (1.0 / 1024.0) / std::sqrt(3.0), 1e-15);
+  EXPECT_NEAR(m2.rmse.value(), (1.0 / 1024.0) / std::sqrt(3.0), 1e-15);
 }
 
 TEST(Metrics, ClassMasksAreHonoured) {
@@ -123,9 +122,9 @@ TEST(Metrics, ClassMasksAreHonoured) {
   const ErrorMetrics a = compute_metrics(tech, truth, ideal, cls, conf);
   EXPECT_EQ(a.rmse_traceable, 0.0);
   EXPECT_EQ(a.rmse_missing, 0.0);
-  EXPECT_GT(a.rmse, 0.0);  // traceable pixels differ from the truth
+  EXPECT_GT(a.rmse.value(), 0.0);  // traceable pixels differ from the truth
   // rmse over 12 reflective pixels, 4 of them off by 0.25 on every channel.
-  EXPECT_NEAR(a.rmse, std::sqrt(4.0 * 3 * 0.0625 / 36.0), 1e-15);
+  EXPECT_NEAR(a.rmse.value(), std::sqrt(4.0 * 3 * 0.0625 / 36.0), 1e-15);
 
   auto scrambled = tech;
   for (std::size_t i = 0; i < 4; ++i) set_rgb(scrambled, i, 7.0f, -3.0f, 0.9f);
@@ -139,8 +138,8 @@ TEST(Metrics, ClassMasksAreHonoured) {
   for (std::size_t i = 8; i < 12; ++i) set_rgb(missing_changed, i, 0.0f, 0.0f, 0.0f);
   const ErrorMetrics c = compute_metrics(missing_changed, truth, ideal, cls, conf);
   EXPECT_EQ(c.rmse_traceable, a.rmse_traceable);
-  EXPECT_NEAR(c.rmse_missing, 0.5, 1e-15);
-  EXPECT_GT(c.rmse, a.rmse);
+  EXPECT_NEAR(c.rmse_missing.value(), 0.5, 1e-15);
+  EXPECT_GT(c.rmse.value(), a.rmse);
 
   // Changing the sky row touches only rmse.
   auto sky_changed = tech;
@@ -148,7 +147,7 @@ TEST(Metrics, ClassMasksAreHonoured) {
   const ErrorMetrics d = compute_metrics(sky_changed, truth, ideal, cls, conf);
   EXPECT_EQ(d.rmse_traceable, a.rmse_traceable);
   EXPECT_EQ(d.rmse_missing, a.rmse_missing);
-  EXPECT_GT(d.rmse, a.rmse);
+  EXPECT_GT(d.rmse.value(), a.rmse);
 
   // Changing the ideal outside the traceable row changes nothing.
   auto ideal2 = ideal;
@@ -163,7 +162,7 @@ TEST(Metrics, ClassMasksAreHonoured) {
             0.0);
   EXPECT_EQ(rmse_where(tech, truth, std::vector<PixelClass>(16, PixelClass::NotReflective),
                        [](PixelClass k) { return k == PixelClass::Traceable; }),
-            0.0);  // no pixel selected
+            std::nullopt);  // no pixel selected
 }
 
 TEST(Metrics, Coverage) {
@@ -178,21 +177,31 @@ TEST(Metrics, Coverage) {
   // Other classes with low confidence do not matter.
   conf[0] = conf[9] = conf[13] = 0.0f;
   const ErrorMetrics m = compute_metrics(img, img, img, cls, conf);
-  EXPECT_DOUBLE_EQ(m.coverage, 0.5);
+  EXPECT_DOUBLE_EQ(m.coverage.value(), 0.5);
 
-  // No traceable pixels: coverage 0.
+  // No traceable pixels: no coverage and no traceable figures (not 0%, not 100 dB).
   std::vector<PixelClass> none(16, PixelClass::Missing);
   const ErrorMetrics n = compute_metrics(img, img, img, none, conf);
   EXPECT_EQ(n.traceable, 0u);
-  EXPECT_EQ(n.coverage, 0.0);
+  EXPECT_EQ(n.coverage, std::nullopt);
+  EXPECT_EQ(n.rmse_traceable, std::nullopt);
+  EXPECT_EQ(n.psnr_traceable, std::nullopt);
   EXPECT_EQ(n.missing, 16u);
+  EXPECT_EQ(n.psnr, kPsnrCap);  // identical images over 16 pixels: the cap
+}
 
-  // All not reflective: everything zero but finite.
+// A frame where nothing reflects has no figure at all: a technique is not 100 dB there.
+TEST(Metrics, NothingReflectiveHasNoFigures) {
+  const auto img = make_image(4, 4, 0.5f, 0.5f, 0.5f);
+  const auto other = make_image(4, 4, 0.0f, 1.0f, 0.0f);
+  std::vector<float> conf(16, 1.0f);
   std::vector<PixelClass> nothing(16, PixelClass::NotReflective);
-  const ErrorMetrics z = compute_metrics(img, img, img, nothing, conf);
+  const ErrorMetrics z = compute_metrics(other, img, img, nothing, conf);
   EXPECT_EQ(z.reflective, 0u);
-  EXPECT_EQ(z.rmse, 0.0);
-  expect_all_finite(z);
+  for (const std::optional<double>* v : {&z.rmse, &z.psnr, &z.rmse_traceable, &z.psnr_traceable, &z.rmse_missing, &z.coverage})
+    EXPECT_EQ(*v, std::nullopt);
+  EXPECT_EQ(rmse_where(other, img, nothing, [](PixelClass k) { return k != PixelClass::NotReflective; }), std::nullopt);
+  EXPECT_EQ(psnr_from_rmse(std::optional<double>()), std::nullopt);
 }
 
 TEST(Metrics, NonFiniteIsCountedAndMaximal) {
@@ -209,10 +218,10 @@ TEST(Metrics, NonFiniteIsCountedAndMaximal) {
   EXPECT_EQ(m.nonfinite, 2u);
   expect_all_finite(m);
   // Each bad channel counts as squared error 1.
-  EXPECT_NEAR(m.rmse, std::sqrt(2.0 / 36.0), 1e-15);
-  EXPECT_NEAR(m.rmse_traceable, std::sqrt(1.0 / 12.0), 1e-15);
-  EXPECT_NEAR(m.rmse_missing, std::sqrt(1.0 / 12.0), 1e-15);
-  EXPECT_LT(m.psnr, kPsnrCap);
+  EXPECT_NEAR(m.rmse.value(), std::sqrt(2.0 / 36.0), 1e-15);
+  EXPECT_NEAR(m.rmse_traceable.value(), std::sqrt(1.0 / 12.0), 1e-15);
+  EXPECT_NEAR(m.rmse_missing.value(), std::sqrt(1.0 / 12.0), 1e-15);
+  EXPECT_LT(m.psnr.value(), kPsnrCap);
 
   // A NaN on a non-reflective pixel, in alpha, or in the confidence still counts.
   auto tech2 = truth;
@@ -223,7 +232,7 @@ TEST(Metrics, NonFiniteIsCountedAndMaximal) {
   const ErrorMetrics m2 = compute_metrics(tech2, truth, truth, cls, conf2);
   EXPECT_EQ(m2.nonfinite, 3u);
   EXPECT_EQ(m2.rmse, 0.0);  // none of them is an RGB value of a reflective pixel
-  EXPECT_DOUBLE_EQ(m2.coverage, 0.75);
+  EXPECT_DOUBLE_EQ(m2.coverage.value(), 0.75);
   expect_all_finite(m2);
 
   // An all-NaN image: never looks good, never produces NaN.
@@ -231,9 +240,9 @@ TEST(Metrics, NonFiniteIsCountedAndMaximal) {
   const ErrorMetrics m3 = compute_metrics(all_nan, truth, truth, cls, conf);
   expect_all_finite(m3);
   EXPECT_EQ(m3.nonfinite, 48u);
-  EXPECT_NEAR(m3.rmse, 1.0, 1e-15);
-  EXPECT_NEAR(m3.psnr, 0.0, 1e-12);
-  EXPECT_NEAR(m3.psnr_traceable, 0.0, 1e-12);
+  EXPECT_NEAR(m3.rmse.value(), 1.0, 1e-15);
+  EXPECT_NEAR(m3.psnr.value(), 0.0, 1e-12);
+  EXPECT_NEAR(m3.psnr_traceable.value(), 0.0, 1e-12);
 
   EXPECT_EQ(count_nonfinite({1.0f, nan, inf, -inf, 0.0f}), 3u);
   EXPECT_EQ(count_nonfinite({}), 0u);

@@ -145,7 +145,6 @@ TEST(Results, JsonHasEveryFieldOfTheContract) {
     for (const char* k : {"rmse", "psnr", "rmse_traceable", "psnr_traceable", "rmse_missing",
                           "coverage", "reflective", "traceable", "missing", "sky"}) {
       EXPECT_TRUE(r["error"].contains(k)) << k;
-      EXPECT_TRUE(r["error"][k].is_number()) << k;
     }
     EXPECT_TRUE(r["params"].is_object());
     EXPECT_TRUE(r["passes"].is_array());
@@ -164,7 +163,13 @@ TEST(Results, JsonHasEveryFieldOfTheContract) {
   EXPECT_DOUBLE_EQ(a["error"]["coverage"].get<double>(), 0.875);
   EXPECT_EQ(a["error"]["traceable"], 800);
   EXPECT_EQ(a["nonfinite"], 0);
+  for (const char* k : {"rmse", "psnr", "rmse_traceable", "psnr_traceable", "rmse_missing", "coverage"})
+    EXPECT_TRUE(a["error"][k].is_number()) << k;
   const auto& b = j["results"][1];
+  // b has no reflective pixel: no figure, null (never 100 dB or 0%), the counts 0.
+  for (const char* k : {"rmse", "psnr", "rmse_traceable", "psnr_traceable", "rmse_missing", "coverage"})
+    EXPECT_TRUE(b["error"][k].is_null()) << k;
+  EXPECT_EQ(b["error"]["reflective"], 0);
   EXPECT_EQ(b["preset"], "fast");
   EXPECT_EQ(b["time_over_floor"], 0.0);  // floor 0
   EXPECT_EQ(b["nonfinite"], 3);
@@ -253,6 +258,7 @@ TEST(Results, Csv) {
   EXPECT_EQ(rows[2][3], "none");
   EXPECT_EQ(rows[2][4], "fast");
   EXPECT_EQ(rows[2][17], "3");
+  for (int k = 11; k <= 16; ++k) EXPECT_EQ(rows[2][static_cast<std::size_t>(k)], "") << k;  // no figure
   EXPECT_EQ(rows[3][0], "cornell");
 
   // Only the header when there is nothing.
@@ -280,6 +286,27 @@ TEST(Results, Table) {
     EXPECT_EQ(line.size(), width) << line;
   }
   EXPECT_GT(width, 0u);
+}
+
+// "cover" and "correct" sit side by side over the same pixels, every traceable one: a technique
+// that handles part of the frame (ppr without fallback) is not correct where it does nothing,
+// although its breakdown's correct_coverage is over the pixels it handles.
+TEST(Results, TableCorrectIsPooledAsCover) {
+  RunResults run = sample_run();
+  RegionFigures all;
+  all.region = {RegionKind::All, 0};
+  all.pixels = 1000;
+  all.handled = false;
+  all.handled_pixels = 500;
+  all.traceable.pixels = 400;  // handled traceable pixels, of the run's 800
+  all.traceable.correct_pixels = 300;
+  all.traceable.correct_coverage = 0.75;
+  run.results[0].breakdown.regions = {all};
+  const std::string t = results_table(run, "gpu");
+  EXPECT_NE(t.find("37.5%"), std::string::npos) << t;  // 300 of 800
+  EXPECT_EQ(t.find("75.0%"), std::string::npos) << t;
+  // The row without reflective pixels shows "-" for its figures, not 100 dB.
+  EXPECT_EQ(t.find("100.00"), std::string::npos) << t;
 }
 
 TEST(Results, WriteTextFileAtomic) {
