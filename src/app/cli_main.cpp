@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
       ->default_str("summary");
   CLI::App* views = app.add_subcommand("views", "List the views (--view): what each shows, its legend, who offers it.");
   bool views_md = false;
-  views->add_flag("--markdown", views_md, "The README's view table (the same table as Markdown).");
+  views->add_flag("--markdown", views_md, "Accepted as scenes and techniques take it: the listing is the README's Markdown table either way.");
 
   refuse_empty_values(app);
   try {
