@@ -104,6 +104,8 @@ std::string parse_error_sentence(const CLI::App& app, int argc, char** argv,
            "--help)";
   }
   if (std::regex_match(what, m, missing)) return "option " + m[1].str() + " needs a value";
+  static const std::regex twice(R"(^(\S+): At Most 1 required but received \d+$)");
+  if (std::regex_match(what, m, twice)) return "option " + m[1].str() + " is given more than once";
   static const std::regex empty(R"(^(\S+): needs a value, not an empty string$)");
   if (std::regex_match(what, m, empty)) return "option " + m[1].str() + " needs a value, not an empty string";
   if (what == "A subcommand is required") return "a subcommand is required (one of " + known + ")";

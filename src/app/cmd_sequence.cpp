@@ -79,7 +79,8 @@ int run_sequence_command(const SequenceOptions& o) {
   const auto [w, h] = parse_size(o.size);
   if (o.frames < 1 || o.frames > 100000) throw InputError("--frames must be in [1, 100000].");
   if (o.truth_every < 1 || o.truth_every > 100000) throw InputError("--truth-every must be in [1, 100000].");
-  if (!(o.fps > 0.0f) || o.fps > 1000.0f) throw InputError("--fps must be in (0, 1000].");
+  // At least 0.01: frame i's time i / fps stays a finite float for every frame count allowed.
+  if (!(o.fps >= 0.01f) || o.fps > 1000.0f) throw InputError("--fps must be in [0.01, 1000].");
   if (!o.plot.empty() && files::lower_extension(o.plot) != ".svg") throw InputError("--plot is written as an .svg.");
   require_output_files({{"--json", o.json}, {"--plot", o.plot}, {"--video", o.video}}, {o.scene});
   // "frames/" (as shells complete it) is the directory "frames": its temporary sibling must not
@@ -189,7 +190,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
-  c->add_option("--fps", o->fps, "Frames per second of scene time.")->capture_default_str();
+  c->add_option("--fps", o->fps, "Frames per second of scene time, in [0.01, 1000].")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
   c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();
   c->add_option("--out", o->out, "A new (or empty) directory for the labelled PNG frames.");

@@ -70,9 +70,11 @@ class JsonReader {
     if (!j.is_number()) fail_at(where, "must be a number");
     const double v = j.get<double>();
     if (!std::isfinite(v) || std::abs(v) > 3.0e38) fail_at(where, "must be a finite number");
-    if (v < lo || v > hi)
+    // Checked as the float it is stored as: 1.001 is 1.00100005 as a float, the bound 1.001f too.
+    const float f = static_cast<float>(v);
+    if (f < lo || f > hi)
       fail_at(where, "must be in [" + fmt(lo) + ", " + fmt(hi) + "], not " + fmt(v));
-    return static_cast<float>(v);
+    return f;
   }
   float number(const nlohmann::json& obj, const std::string& parent, const char* key, float def, float lo,
                float hi) const {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/errors.h"
 
@@ -92,6 +93,13 @@ void ParamSet::set_from_string(std::size_t i, std::string_view text) {
     throw InputError("parameter '" + key(i) + "' must be in " + range_string(i) + ", got " +
                      std::string(text) + " (write auto for the automatic value).");
   set(i, v);
+}
+
+void ParamSet::copy_values_from(const ParamSet& other) {
+  if (other.table_.data() != table_.data() || other.table_.size() != table_.size())
+    throw std::logic_error("ParamSet::copy_values_from: '" + other.prefix_ + "' is not a view of '" + prefix_ + "''s table.");
+  for (const ParamDesc& d : table_)  // every value is 4 bytes (float or int32: set())
+    std::memcpy(static_cast<std::byte*>(data_) + d.offset, static_cast<const std::byte*>(other.data_) + d.offset, 4);
 }
 
 void ParamSet::reset(std::size_t i) { set(i, get_default(i)); }

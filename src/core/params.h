@@ -77,6 +77,9 @@ class ParamSet {
   void set_from_string(std::size_t i, std::string_view text);
   void reset(std::size_t i);
   void reset_all();
+  // Every value of `other`, a view of the same table, as stored: not through set(), whose range
+  // check a stored float may fail by a rounding (the minimum 1e-4 is 9.9999997e-5 as a float).
+  void copy_values_from(const ParamSet& other);
   std::string to_string(std::size_t i) const;          // the value as the CLI would take it
   std::string default_string(std::size_t i) const;
   std::string range_string(std::size_t i) const;       // "[1, 4096]", "auto|[1, 4096]", "true|false", "a|b|c"

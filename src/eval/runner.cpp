@@ -101,7 +101,7 @@ ReferenceImages ScoredFrame::references(int samples) {
     // samples are independent of the converged ideal's.
     auto ref = create_technique(truth_name());
     ParamSet from = reference_.params(), to = ref->params();
-    for (std::size_t i = 0; i < from.size(); ++i) to.set(i, from.get(i));
+    to.copy_values_from(from);
     to.set(static_cast<std::size_t>(to.find("samples")), samples);
     const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
     to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + 7919) % 1000000));

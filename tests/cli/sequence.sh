@@ -86,6 +86,8 @@ bad --scene gallery --path nowhere --frames 2
 bad --scene gallery --frames 0
 bad --scene gallery --frames 2 --truth-every 0
 bad --scene gallery --frames 2 --fps 0
+bad --scene gallery --frames 3 --fps 1e-40  # frame times would overflow a float
+bad --scene gallery --frames 2 --frames 3
 bad --scene gallery --frames 2 --video "$tmp/missing-dir/v.mp4"
 bad --scene gallery --frames 2 --video "$tmp/bad/v.gif"
 bad --scene gallery --frames 2 --out "$tmp"

@@ -54,6 +54,24 @@ TEST(Params, RejectsBadValues) {
   }
 }
 
+// A float parameter at its minimum survives a copy into another set: 0.0001, stored as the float
+// 9.9999997e-5, was refused when the scorer copied the reference's parameters value by value
+// through set() (compare with reference.depth_tolerance=0.0001 exited 2 mid-run).
+TEST(Params, AFloatAtItsBoundSurvivesACopy) {
+  auto a = create_technique("reference");
+  auto b = create_technique("reference");
+  ParamSet from = a->params(), to = b->params();
+  const auto i = static_cast<std::size_t>(from.find("depth_tolerance"));
+  from.set_from_string(i, "0.0001");
+  EXPECT_LT(from.get(i), 0.0001);                          // stored as the float below it
+  EXPECT_THROW(to.set(i, from.get(i)), InputError);         // so set() refuses it, as it should
+  to.copy_values_from(from);                                // a copy takes it as stored
+  EXPECT_EQ(to.get(i), from.get(i));
+  EXPECT_THROW(to.set_from_string(i, "0.0000999999"), InputError);  // below the bound as typed
+  auto lin = create_technique("linear");
+  EXPECT_THROW(to.copy_values_from(lin->params()), std::logic_error);
+}
+
 TEST(Params, Assignments) {
   auto t = create_technique("linear");
   apply_assignments(*t, {"linear.thickness=0.5", "linear.depth_interp=false"});

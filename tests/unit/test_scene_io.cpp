@@ -490,6 +490,18 @@ TEST(FuzzRegressions, ManyJsonMaterialsAndPrimitivesLoadQuickly) {
 
 // ---- load_scene dispatch and the example scene -------------------------------------------------
 
+// A range's end values are legal, as the float they are stored as: 1.001 and 178.999 were
+// refused ("must be in [1.001, 178.999], not 1.001") when compared as doubles with float bounds.
+TEST(JsonLoad, RangeEndsAreAccepted) {
+  for (const char* fov : {"1.001", "178.999"}) {
+    const auto file = fuzz_file(std::string("fov_") + fov + ".json",
+                                std::string(R"({"primitives": [{"type": "plane", "name": "floor", "size": [10, 10]}],
+                                               "cameras": [{"name": "c", "position": [0, 1, 3], "target": [0, 0, 0], "fov_y": )") +
+                                    fov + "}]}");
+    EXPECT_NO_THROW(ssr::load_scene(file.string())) << fov;
+  }
+}
+
 TEST(LoadScene, ExamplePedestalScene) {
   const Scene s = ssr::load_scene(kPedestal);
   EXPECT_EQ(s.name, "pedestal");
