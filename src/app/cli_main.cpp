@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 
 #include <CLI/CLI.hpp>
 
@@ -79,39 +78,6 @@ int input_error(std::string msg) {
   return 2;
 }
 
-// CLI11's messages, reworded where they are not a clear sentence.
-std::string parse_error_sentence(const CLI::App& app, int argc, char** argv,
-                                const CLI::ParseError& e) {
-  std::string known;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    known += (known.empty() ? "" : ", ") + sub->get_name();
-  if (argc > 1 && argv[1][0] != '-' && app.get_subcommands().empty())
-    return "unknown subcommand '" + std::string(argv[1]) + "' (known: " + known + ")";
-  const std::string what = e.what();
-  std::smatch m;
-  static const std::regex conversion(R"(^Could not convert: (\S+) = (.*)$)");
-  static const std::regex extras(R"(^The following arguments? (?:was|were) not expected: (.*)$)");
-  static const std::regex missing(R"(^(\S+): \d+ required \S+ missing$)");
-  if (std::regex_match(what, m, conversion))
-    return "option " + m[1].str() + " cannot take the value '" + m[2].str() +
-           "' (wrong type, or out of range)";
-  if (std::regex_match(what, m, extras)) {
-    // The message lists them last first; the parse kept them in the order given.
-    std::string given;
-    for (const std::string& a : app.remaining(/*recurse=*/true)) given += (given.empty() ? "" : " ") + a;
-    return "unknown option or unexpected argument '" + (given.empty() ? m[1].str() : given) + "' (see ssrlab " +
-           (app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name() + " ") +
-           "--help)";
-  }
-  if (std::regex_match(what, m, missing)) return "option " + m[1].str() + " needs a value";
-  static const std::regex twice(R"(^(\S+): At Most 1 required but received \d+$)");
-  if (std::regex_match(what, m, twice)) return "option " + m[1].str() + " is given more than once";
-  static const std::regex empty(R"(^(\S+): needs a value, not an empty string$)");
-  if (std::regex_match(what, m, empty)) return "option " + m[1].str() + " needs a value, not an empty string";
-  if (what == "A subcommand is required") return "a subcommand is required (one of " + known + ")";
-  return what;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,7 +107,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return input_error(parse_error_sentence(app, argc, argv, e));
+    return input_error(parse_error_sentence(app, "ssrlab", argc, argv, e));
   }
 
   try {

@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "ssrlab-view: %s\n", e.what());
+    std::fprintf(stderr, "ssrlab-view: %s.\n", parse_error_sentence(app, "ssrlab-view", argc, argv, e).c_str());
     return 2;
   }
   if (help_script) {

@@ -128,6 +128,10 @@ expect2 'broken.json' --preset broken.json --frames 1
 expect2 'nosuch' --technique nosuch --frames 1
 expect2 'needs --frames' --screenshot shot.png
 expect2 'viewport limit\|window system' --size 100000x100 --frames 1
+# The command line's own errors read as ssrlab's (one sentence, not CLI11's wording).
+expect2 'option --frames is given more than once' --frames 1 --frames 2
+expect2 'option --split must be in \[0, 1\], got 2' --split 2 --frames 1
+expect2 "unexpected argument 'stray' (see ssrlab-view --help)" stray --frames 1
 # Found by a review: a debug view the shown technique does not fill (it stayed on the final
 # image without a word), a size the window system would clamp (it reported another width), a
 # screenshot into a missing directory (exit 1, no line).
