@@ -26,6 +26,9 @@ vec3 texture_map(int slot, vec2 uv, float lod_uv) {
   if (slot == i) c = textureLod(albedo_maps[i], uv, lod_uv + log2(float(textureSize(albedo_maps[i], 0).x))).rgb;
   SSR_MAP_CASE(0) SSR_MAP_CASE(1) SSR_MAP_CASE(2) SSR_MAP_CASE(3)
   SSR_MAP_CASE(4) SSR_MAP_CASE(5) SSR_MAP_CASE(6) SSR_MAP_CASE(7)
+#if REFERENCE_MAX_TEXTURES != 8
+#error "one SSR_MAP_CASE per slot: texture_map() must list REFERENCE_MAX_TEXTURES cases"
+#endif
   return c;
 }
 

@@ -191,7 +191,7 @@ int run_bench(const BenchOptions& o) {
   if (o.frames < 1 || o.frames > 10000) throw InputError("--frames must be in [1, 10000].");
   if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
   std::vector<std::pair<int, int>> sizes;
-  for (const std::string& s : split_list(o.sizes, "size")) sizes.push_back(parse_named_size(s));
+  for (const std::string& s : split_list(o.sizes, "size")) sizes.push_back(parse_size(s));
   std::vector<std::string> scene_names = o.scene_list;
   if (!o.scenes.empty())
     for (const std::string& s : split_list(o.scenes, "scene")) scene_names.push_back(s);
@@ -298,7 +298,7 @@ Command add_bench_command(CLI::App& app) {
   c->add_option("--preset", o->presets, "Add a named preset as its own variant (repeatable).");
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
   c->add_option("--sweep", o->sweeps, "technique.key=v1,v2,... (repeatable; sweeps of one technique multiply).");
-  c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or 720p, 1080p, 1440p, 4k, 8k.")->capture_default_str();
+  c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or " + size_names() + ".")->capture_default_str();
   c->add_option("--frames", o->frames, "Timed frames per variant.")->capture_default_str();
   c->add_option("--warmup", o->warmup, "Untimed frames before timing (on a GPU, more until 0.3 s have passed: the clock comes up).")->capture_default_str();
   c->add_option("--json", o->json, "Results JSON.");

@@ -121,7 +121,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--techniques", o->techniques, "Comma-separated techniques (default: all but the reference).");
   c->add_option("--preset", o->presets, "Add a named preset as its own column (repeatable).");
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
-  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--size", o->size, "Image size: WIDTHxHEIGHT or " + size_names() + ".")->capture_default_str();
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
   c->add_option("--out", o->out, "The labelled grid (.png).")->required();
   c->add_option("--json", o->json, "Results JSON (README, Verdicts: every field).");

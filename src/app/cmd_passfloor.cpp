@@ -53,7 +53,7 @@ std::vector<const T*> pick(const std::string& list, std::span<const T> all, cons
 
 int run_passfloor(const PassFloorOptions& o) {
   std::vector<std::pair<int, int>> sizes;
-  for (const std::string& s : bounded_list(o.sizes, "size")) sizes.push_back(parse_named_size(s));
+  for (const std::string& s : bounded_list(o.sizes, "size")) sizes.push_back(parse_size(s));
   const auto modes = pick<PassFloorMode>(o.modes, pass_floor_modes(), pass_floor_mode, "pass mode");
   const auto kinds = pick<PassFloorKind>(o.kinds, pass_floor_kinds(), pass_floor_kind, "pass kind");
   std::vector<int> chains;
@@ -109,7 +109,7 @@ Command add_passfloor_command(CLI::App& app) {
   CLI::App* c = app.add_subcommand(
       "passfloor", "Time what one full-screen pass costs by itself: compute group shapes and fragment passes, "
                    "from no work to a 5x5 box of fetches, alone and in chains.");
-  c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or 720p, 1080p, 1440p, 4k, 8k.")->capture_default_str();
+  c->add_option("--sizes", o->sizes, "Comma-separated sizes: WxH or " + size_names() + ".")->capture_default_str();
   c->add_option("--modes", o->modes, "Comma-separated: " + pass_floor_mode_names() + " (or all).")->capture_default_str();
   c->add_option("--kinds", o->kinds, "Comma-separated: " + pass_floor_kind_names() + " (or all).")->capture_default_str();
   c->add_option("--chains", o->chains, "Comma-separated numbers of passes in a row per timed span (1-256).")

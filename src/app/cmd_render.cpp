@@ -215,7 +215,7 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--preset", o->preset, "A named parameter set (sets the technique, so not with --technique), e.g. thesis-hq.")
       ->excludes(technique);
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable).");
-  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--size", o->size, "Image size: WIDTHxHEIGHT or " + size_names() + ".")->capture_default_str();
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
   c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
   std::string views;

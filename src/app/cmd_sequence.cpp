@@ -187,7 +187,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--set", o->sets, "Parameter assignment technique.key=value (repeatable; reference.* too).");
   c->add_option("--sweep", o->sweeps,
                 "technique.key=v1,v2,... (repeatable; sweeps of one technique multiply): each value its own technique.");
-  c->add_option("--size", o->size, "Image size WIDTHxHEIGHT.")->capture_default_str();
+  c->add_option("--size", o->size, "Image size: WIDTHxHEIGHT or " + size_names() + ".")->capture_default_str();
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
   c->add_option("--fps", o->fps, "Frames per second of scene time, in [0.01, 1000].")->capture_default_str();

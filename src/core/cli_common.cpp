@@ -6,19 +6,43 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <map>
 #include <regex>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/files.h"
 
 namespace ssr {
 
+namespace {
+// Each size's names, the first the one help texts give.
+struct SizeName {
+  std::vector<const char*> names;
+  int width, height;
+};
+const SizeName kSizeNames[] = {{{"720p"}, 1280, 720},          {{"1080p"}, 1920, 1080},
+                               {{"1440p"}, 2560, 1440},        {{"4k", "2160p"}, 3840, 2160},
+                               {{"8k", "4320p"}, 7680, 4320}};
+}  // namespace
+
+std::string size_names() {
+  std::string out;
+  for (const SizeName& s : kSizeNames) {
+    out += (out.empty() ? "" : ", ") + std::string(s.names[0]);
+    if (s.names.size() > 1) out += " (" + std::string(s.names[1]) + ")";
+  }
+  return out;
+}
+
 std::pair<int, int> parse_size(const std::string& text) {
+  for (const SizeName& s : kSizeNames)
+    for (const char* n : s.names)
+      if (text == n) return {s.width, s.height};
   static const std::regex re(R"(^(\d{1,6})x(\d{1,6})$)");
   std::smatch m;
   if (!std::regex_match(text, m, re))
-    throw InputError("size '" + text + "' is not of the form WIDTHxHEIGHT (e.g. 1280x720).");
+    throw InputError("size '" + text + "' is not of the form WIDTHxHEIGHT (e.g. 1280x720) nor a size name (" +
+                     size_names() + ").");
   const int w = std::stoi(m[1]), h = std::stoi(m[2]);
   if (w < 1 || h < 1) throw InputError("size '" + text + "' must be at least 1x1.");
   if (static_cast<long long>(w) * h > kMaxFramePixels)
@@ -26,14 +50,6 @@ std::pair<int, int> parse_size(const std::string& text) {
                      " pixels, more than the " + std::to_string(kMaxFramePixels) +
                      " (8192x8192) supported.");
   return {w, h};
-}
-
-std::pair<int, int> parse_named_size(const std::string& text) {
-  static const std::map<std::string, std::pair<int, int>> named = {
-      {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}},
-      {"4k", {3840, 2160}}, {"2160p", {3840, 2160}}, {"8k", {7680, 4320}}, {"4320p", {7680, 4320}}};
-  const auto it = named.find(text);
-  return it != named.end() ? it->second : parse_size(text);
 }
 
 void require_creatable(const std::string& option, const std::string& path, const std::filesystem::path& dir) {

@@ -12,11 +12,12 @@ namespace ssr {
 // so a size the GL accepts side by side (16384x16384) could still exhaust memory.
 constexpr long long kMaxFramePixels = 1LL << 26;
 
-// "WxH" -> {W, H}; throws InputError for anything else (0 sides and more than kMaxFramePixels
-// included). The GL's own limit per side is checked once a context is open (open_gl).
+// "WxH" or a size name (size_names()) -> {W, H}; throws InputError for anything else (0 sides and
+// more than kMaxFramePixels included). The GL's own limit per side is checked once a context is
+// open (open_gl).
 std::pair<int, int> parse_size(const std::string& text);
-// parse_size, or a name: "720p", "1080p", "1440p", "4k" (= "2160p"), "8k" (= "4320p").
-std::pair<int, int> parse_named_size(const std::string& text);
+// The size names parse_size takes, for help texts: "720p, 1080p, 1440p, 4k (2160p), 8k (4320p)".
+std::string size_names();
 
 // `text` made safe for a Markdown table cell: a '|' inside a cell would end it.
 std::string markdown_cell(std::string text);

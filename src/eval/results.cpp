@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <stdexcept>
 #include <string_view>
 #include <system_error>
 
@@ -277,6 +278,10 @@ namespace {
 // Columns padded to their widest cell: the first left-aligned, the others right-aligned.
 std::string format_table(const std::vector<std::string>& header,
                          const std::vector<std::vector<std::string>>& rows) {
+  for (const auto& row : rows)  // a row and its header are written side by side: keep them equal
+    if (row.size() != header.size())
+      throw std::logic_error("format_table: a row of " + std::to_string(row.size()) + " cells under " +
+                             std::to_string(header.size()) + " columns.");
   std::vector<std::size_t> width(header.size());
   for (std::size_t c = 0; c < header.size(); ++c) {
     width[c] = header[c].size();

@@ -10,6 +10,7 @@
 #include "viewer/preset.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "core/files.h"
 #include "render/renderer.h"
 #include "techniques/technique.h"
 #include "registry/presets.h"
@@ -99,7 +100,7 @@ void check(ArgForm kind, const std::string& a, const std::string& at) {
     }
     case ArgForm::PresetName: find_preset(a); return;  // throws listing the names
     case ArgForm::Png: {
-      if (std::filesystem::path(a).extension() != ".png")
+      if (files::lower_extension(a) != ".png")  // as ssrlab takes A.PNG
         throw InputError(at + "screenshot '" + a + "' must end in .png.");
       const std::filesystem::path dir = std::filesystem::absolute(a).parent_path();
       std::error_code ec;

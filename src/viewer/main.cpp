@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli_common.h"
 #include "core/cli_options.h"
 #include "core/errors.h"
 #include "viewer/viewer.h"
@@ -22,7 +23,7 @@ int main(int argc, char** argv) {
   app.add_option("--scene", o.scene, "Built-in scene name (with options, e.g. gallery:reflectors=5) or a .json/.obj path.")->capture_default_str();
   app.add_option("--technique", o.technique, "Technique A (the left of a split).")->capture_default_str();
   app.add_option("--set", o.sets, "Parameter assignment technique.key=value (repeatable).");
-  app.add_option("--size", o.size, "Image size WIDTHxHEIGHT (the window adds the side panel and the status bar).")->capture_default_str();
+  app.add_option("--size", o.size, "Image size: WIDTHxHEIGHT or " + size_names() + " (the window adds the side panel and the status bar).")->capture_default_str();
   app.add_option("--camera", o.camera, "Named camera of the scene.");
   app.add_option("--view", o.view, "Initial view (final, reflection, confidence, lit, ..., traceable).")->capture_default_str();
   app.add_option("--frames", o.frames, "Render this many frames, then exit (0: interactive).")->check(CLI::Range(0, 100000));

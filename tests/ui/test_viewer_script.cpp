@@ -52,6 +52,7 @@ TEST(ViewerScript, RejectsBadLinesNamingFileAndLine) {
   EXPECT_NE(error_of("set max_steps=3\n").find("technique.key=value"), std::string::npos);
   EXPECT_NE(error_of("resize 0x10\n").find("s.txt:1:"), std::string::npos);
   EXPECT_NE(error_of("screenshot a.exr\n").find(".png"), std::string::npos);
+  EXPECT_EQ(error_of("screenshot A.PNG\nresize 720p\n"), "");  // as ssrlab takes them
   // One sentence: no line breaks in any message.
   for (const char* bad : {"jump\n", "frames x\n", "view nosuch\n", "technique nosuch\n"})
     EXPECT_EQ(error_of(bad).find('\n'), std::string::npos) << bad;

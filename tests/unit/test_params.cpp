@@ -129,6 +129,12 @@ TEST(Params, RegistryTablesAreWellFormed) {
 
 TEST(Cli, ParseSize) {
   EXPECT_EQ(parse_size("1280x720"), std::make_pair(1280, 720));
+  // Every command takes the size names bench takes (render refused "1080p").
+  EXPECT_EQ(parse_size("1080p"), std::make_pair(1920, 1080));
+  EXPECT_EQ(parse_size("4k"), parse_size("2160p"));
+  EXPECT_EQ(parse_size("8k"), std::make_pair(7680, 4320));
+  EXPECT_THROW(parse_size("1080"), InputError);
+  EXPECT_THROW(parse_size("4K"), InputError);
   EXPECT_EQ(parse_size("1x1"), std::make_pair(1, 1));
   EXPECT_THROW(parse_size("0x0"), InputError);
   EXPECT_THROW(parse_size("10x0"), InputError);
