@@ -129,7 +129,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--regions", o->regions,
-                "The breakdown's rows (implies --breakdown): all,planar,reflector:N,other,mirror,glossy,rough,refractive.");
+                "The breakdown's rows (implies --breakdown): " + region_names() + ".");
   c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
   return {c, [o] { return run_compare(*o); }};
 }

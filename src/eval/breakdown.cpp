@@ -95,17 +95,24 @@ struct ClassAccum {
 
 }  // namespace
 
+namespace {
+// Every region kind in report order with its name ("reflector" stands for reflector:N).
+constexpr std::pair<RegionKind, const char*> kRegionNames[] = {
+    {RegionKind::All, "all"},       {RegionKind::Planar, "planar"}, {RegionKind::Reflector, "reflector"},
+    {RegionKind::Other, "other"},   {RegionKind::Mirror, "mirror"}, {RegionKind::Glossy, "glossy"},
+    {RegionKind::Rough, "rough"},   {RegionKind::Refractive, "refractive"}};
+}  // namespace
+
+std::string region_names() {
+  std::string out;
+  for (const auto& [k, n] : kRegionNames)
+    out += (out.empty() ? "" : ",") + std::string(n) + (k == RegionKind::Reflector ? ":N" : "");
+  return out;
+}
+
 std::string Region::name() const {
-  switch (kind) {
-    case RegionKind::All: return "all";
-    case RegionKind::Planar: return "planar";
-    case RegionKind::Reflector: return "reflector:" + std::to_string(reflector);
-    case RegionKind::Other: return "other";
-    case RegionKind::Mirror: return "mirror";
-    case RegionKind::Glossy: return "glossy";
-    case RegionKind::Rough: return "rough";
-    case RegionKind::Refractive: return "refractive";
-  }
+  for (const auto& [k, n] : kRegionNames)
+    if (k == kind) return k == RegionKind::Reflector ? std::string(n) + ":" + std::to_string(reflector) : n;
   return "?";
 }
 
@@ -134,20 +141,18 @@ bool Region::contains(const PixelLabels& l, std::size_t i) const {
 }
 
 std::vector<Region> frame_regions(const PixelLabels& labels) {
-  std::vector<Region> out = {{RegionKind::All, 0}, {RegionKind::Planar, 0}};
-  for (int k = 1; k <= labels.reflectors; ++k) out.push_back({RegionKind::Reflector, k});
-  for (RegionKind k : {RegionKind::Other, RegionKind::Mirror, RegionKind::Glossy, RegionKind::Rough, RegionKind::Refractive})
-    out.push_back({k, 0});
+  std::vector<Region> out;
+  for (const auto& [k, n] : kRegionNames) {
+    if (k != RegionKind::Reflector) out.push_back({k, 0});
+    else
+      for (int r = 1; r <= labels.reflectors; ++r) out.push_back({k, r});
+  }
   return out;
 }
 
 Region parse_region(const std::string& name, int reflectors) {
-  static const std::pair<const char*, RegionKind> kFixed[] = {
-      {"all", RegionKind::All},       {"planar", RegionKind::Planar}, {"other", RegionKind::Other},
-      {"mirror", RegionKind::Mirror}, {"glossy", RegionKind::Glossy}, {"rough", RegionKind::Rough},
-      {"refractive", RegionKind::Refractive}};
-  for (const auto& [n, k] : kFixed)
-    if (name == n) return {k, 0};
+  for (const auto& [k, n] : kRegionNames)
+    if (k != RegionKind::Reflector && name == n) return {k, 0};
   const std::string prefix = "reflector:";
   if (name.rfind(prefix, 0) == 0) {
     const std::string id = name.substr(prefix.size());
@@ -157,8 +162,7 @@ Region parse_region(const std::string& name, int reflectors) {
     throw InputError("region '" + name + "' names no reflector of this scene (it has " +
                      std::to_string(reflectors) + ").");
   }
-  throw InputError("unknown region '" + name +
-                   "' (known: all, planar, reflector:N, other, mirror, glossy, rough, refractive).");
+  throw InputError("unknown region '" + name + "' (known: " + region_names() + ").");
 }
 
 HitClass classify_hit(PixelClass c, float confidence, const float* reflected, const float* expected) {

@@ -60,6 +60,8 @@ struct Region {
 std::vector<Region> frame_regions(const PixelLabels& labels);
 // Parses a region name as `--region`-style options take it; throws InputError on an unknown one.
 Region parse_region(const std::string& name, int reflectors);
+// Every name parse_region takes, in report order: "all,planar,reflector:N,other,...".
+std::string region_names();
 
 // Per-pixel verdict on a technique's claim.
 enum class HitClass : std::uint8_t {
