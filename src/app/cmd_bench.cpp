@@ -17,6 +17,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "core/files.h"
 #include "core/revision.h"
 #include "registry/variants.h"
@@ -304,7 +305,7 @@ Command add_bench_command(CLI::App& app) {
   c->add_option("--json", o->json, "Results JSON.");
   c->add_option("--csv", o->csv, "Results CSV.");
   c->add_option("--plot", o->plot, "Error-vs-time SVG; sweep and resolution plots go beside it.");
-  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   c->add_option("--shaders", o->shader_dir,
                 "Load shaders from this directory instead of the embedded copy (to time another revision's).");
   return {c, [o] { return run_bench(*o); }};

@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "core/revision.h"
 #include "registry/variants.h"
 #include "eval/grid.h"
@@ -130,7 +131,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--regions", o->regions,
                 "The breakdown's rows (implies --breakdown): " + region_names() + ".");
-  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   return {c, [o] { return run_compare(*o); }};
 }
 

@@ -11,6 +11,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "core/revision.h"
 #include "eval/pass_floor.h"
 #include "eval/results.h"
@@ -117,7 +118,7 @@ Command add_passfloor_command(CLI::App& app) {
   c->add_option("--frames", o->frames, "Timed frames per case (after 10 and at least 0.3 s of warm-up).")
       ->capture_default_str();
   c->add_option("--json", o->json, "Results JSON.");
-  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   return {c, [o] { return run_passfloor(*o); }};
 }
 

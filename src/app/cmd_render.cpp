@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "eval/grid.h"
 #include "eval/metrics.h"
 #include "eval/results.h"
@@ -223,7 +224,7 @@ Command add_render_command(CLI::App& app) {
   for (const RenderOnlyViewInfo& v : kRenderOnlyViews) views += "|" + std::string(v.name) + " (" + v.description + ")";
   c->add_option("--view", o->view, "What to write: " + views + ".")->capture_default_str();
   c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
-  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");
   return {c, [o] { return run_render(*o); }};
 }

@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "gl/context.h"
 #include "core/files.h"
 #include "core/revision.h"
 #include "registry/variants.h"
@@ -196,7 +197,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--out", o->out, "A new (or empty) directory for the labelled PNG frames.");
   c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");
   c->add_option("--plot", o->plot, "SVG: PSNR per frame and flicker per frame.");
-  c->add_option("--gl", o->gl, "GL path: auto|egl|osmesa.")->capture_default_str();
+  c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   return {c, [o] { return run_sequence_command(*o); }};
 }
 

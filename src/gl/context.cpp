@@ -236,11 +236,21 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(Backend backend, bool d
   return ctx;
 }
 
+namespace {
+constexpr std::pair<Backend, const char*> kBackendNames[] = {
+    {Backend::Auto, "auto"}, {Backend::Egl, "egl"}, {Backend::OSMesa, "osmesa"}};
+}  // namespace
+
+std::string backend_names() {
+  std::string out;
+  for (const auto& [b, n] : kBackendNames) out += (out.empty() ? "" : "|") + std::string(n);
+  return out;
+}
+
 Backend parse_backend(const std::string& s) {
-  if (s == "auto") return Backend::Auto;
-  if (s == "egl") return Backend::Egl;
-  if (s == "osmesa") return Backend::OSMesa;
-  throw InputError("unknown GL path '" + s + "' (use egl, osmesa or auto).");
+  for (const auto& [b, n] : kBackendNames)
+    if (s == n) return b;
+  throw InputError("unknown GL path '" + s + "' (one of " + backend_names() + ").");
 }
 
 namespace {

@@ -38,6 +38,7 @@ ContextInfo query_current_context(const std::string& path);
 
 // Parses "egl" / "osmesa" / "auto"; throws InputError otherwise.
 Backend parse_backend(const std::string& s);
+std::string backend_names();  // what parse_backend takes: "auto|egl|osmesa"
 
 // Turns on KHR_debug output: GL errors are recorded for take_gl_errors(); with `verbose`, every
 // message above notification severity also goes to stderr.
