@@ -38,6 +38,7 @@ inline std::string parse_error_sentence(const CLI::App& app, const std::string& 
   static const std::regex missing(R"(^(\S+): \d+ required \S+ missing$)");
   static const std::regex twice(R"(^(\S+): At Most 1 required but received \d+$)");
   static const std::regex empty(R"(^(\S+): needs a value, not an empty string$)");
+  static const std::regex range(R"(^(\S+): Value (\S+) not in range (\S+) to (\S+)$)");
   if (std::regex_match(what, m, conversion))
     return "option " + m[1].str() + " cannot take the value '" + m[2].str() + "' (wrong type, or out of range)";
   if (std::regex_match(what, m, extras)) {
@@ -49,7 +50,6 @@ inline std::string parse_error_sentence(const CLI::App& app, const std::string& 
   }
   if (std::regex_match(what, m, missing)) return "option " + m[1].str() + " needs a value";
   if (std::regex_match(what, m, twice)) return "option " + m[1].str() + " is given more than once";
-  static const std::regex range(R"(^(\S+): Value (\S+) not in range (\S+) to (\S+)$)");
   if (std::regex_match(what, m, range)) {
     const auto num = [](const std::string& t) {  // CLI11 writes 0.000000
       char b[32];

@@ -93,14 +93,12 @@ struct ClassAccum {
   }
 };
 
-}  // namespace
-
-namespace {
 // Every region kind in report order with its name ("reflector" stands for reflector:N).
 constexpr std::pair<RegionKind, const char*> kRegionNames[] = {
     {RegionKind::All, "all"},       {RegionKind::Planar, "planar"}, {RegionKind::Reflector, "reflector"},
     {RegionKind::Other, "other"},   {RegionKind::Mirror, "mirror"}, {RegionKind::Glossy, "glossy"},
     {RegionKind::Rough, "rough"},   {RegionKind::Refractive, "refractive"}};
+
 }  // namespace
 
 std::string region_names() {
