@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -145,15 +146,42 @@ void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
     // Time vs the swept parameter, per technique with a sweep.
     const std::optional<std::string> sweep_path = plan.path(PlotKind::Sweep, run.scene, size);
     if (!sweep_path) continue;
+    // Against the first swept key: a series for each combination of the other swept keys' values.
+    // A key whose values are not all numbers (auto, true/false, a choice) is placed by the order
+    // of its values, each point labelled with its value.
     PlotSpec sweep{"Time vs swept parameter, " + where, "parameter value", "time (ms, " + clock + ")", false, false, {}};
+    const auto param = [](const TechniqueResult& t, const std::string& key) {
+      for (const auto& [k, v] : t.params)
+        if (k == key) return v;
+      return std::string();
+    };
+    const auto number = [](const std::string& v) -> std::optional<double> {
+      double d = 0;
+      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), d);
+      return ec == std::errc() && end == v.data() + v.size() ? std::optional(d) : std::nullopt;
+    };
+    std::map<std::string, std::vector<std::string>> values;  // per x key: its values, in order
     for (std::size_t i = 0; i < run.results.size(); ++i) {
       if (variants[i].swept_keys.empty()) continue;
+      const std::string& key = variants[i].swept_keys.front();
+      std::vector<std::string>& seen = values[key];
+      const std::string v = param(run.results[i], key);
+      if (std::find(seen.begin(), seen.end(), v) == seen.end()) seen.push_back(v);
+    }
+    for (std::size_t i = 0; i < run.results.size(); ++i) {
+      const std::vector<std::string>& keys = variants[i].swept_keys;
+      if (keys.empty()) continue;
       const TechniqueResult& t = run.results[i];
-      const std::string name = variants[i].swept_keys.front();  // plotted against the first swept key
+      std::string name = keys.front();
+      for (std::size_t k = 1; k < keys.size(); ++k) name += (k == 1 ? " at " : ", ") + keys[k] + "=" + param(t, keys[k]);
       auto it = std::find_if(sweep.series.begin(), sweep.series.end(), [&](const PlotSeries& s) { return s.name == name; });
       if (it == sweep.series.end()) { sweep.series.push_back({name, {}, {}, true}); it = sweep.series.end() - 1; }
-      for (const auto& [k, v] : t.params)
-        if (k == name) it->points.push_back({std::stod(v), t.time_ms.median});
+      const std::vector<std::string>& all = values[keys.front()];
+      const bool numeric = std::all_of(all.begin(), all.end(), [&](const std::string& v) { return number(v).has_value(); });
+      const std::string v = param(t, keys.front());
+      const double x = numeric ? *number(v) : static_cast<double>(std::find(all.begin(), all.end(), v) - all.begin());
+      it->points.push_back({x, t.time_ms.median});
+      if (!numeric) it->labels.push_back(v);
     }
     write(*sweep_path, sweep);
   }

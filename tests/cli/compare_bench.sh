@@ -30,6 +30,19 @@ for r in j["results"]:
     e = r["error"]
     assert e["reflective"] == 0 and all(e[k] is None for k in ("rmse", "psnr", "psnr_traceable", "coverage")), e
 PY
+# The sweep plot: a value that is not a number (auto, true) is placed by its order and labelled
+# (--plot exited 1 on std::stod); two swept keys give a series per value of the second (they
+# were drawn as one line).
+mkdir "$tmp/sweeps"
+"$SSRLAB" bench --scenes cornell --sizes 32x18 --frames 1 --warmup 0 --techniques linear,dda \
+  --sweep linear.max_steps=8,16 --sweep linear.thickness=0.1,0.5 --sweep dda.max_steps=auto,64 \
+  --set reference.samples=1 --plot "$tmp/sweeps/s.svg" > /dev/null
+python3 - "$tmp/sweeps/s-sweep-cornell-32x18.svg" <<'PY'
+import re, sys
+text = " ".join(re.sub(r"<[^>]*>", " ", t) for t in re.findall(r"<text[^>]*>[^<]*</text>", open(sys.argv[1]).read()))
+for want in ("linear.max_steps at linear.thickness=0.1", "linear.max_steps at linear.thickness=0.5", "dda.max_steps", "auto"):
+    assert want in text, (want, text)
+PY
 # Shaders from a directory (another revision's, to time it): the JSON's revision says so.
 "$SSRLAB" bench --scenes gallery --sizes 32x18 --techniques linear --set reference.samples=4 --frames 1 --warmup 0 \
   --shaders "$(cd "$(dirname "$0")/../../shaders" && pwd)" --json "$tmp/bench_shaders.json" >/dev/null
