@@ -291,7 +291,7 @@ int run_bench(const BenchOptions& o) {
       const Camera& camera = scene.cameras.front();
       progress(done, total, scene.name + " " + size_name(w, h) + " reference");
       auto frame = std::make_unique<ScoredFrame>(*renderer, camera, *reference);
-      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt};
+      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt, param_list(*reference)};
       for (const Variant& v : variants) {
         progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
         EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing);

@@ -83,6 +83,7 @@ int run_compare(const CompareOptions& o) {
   run.width = w;
   run.height = h;
   run.inherent_psnr = frame.inherent_psnr();
+  run.reference_params = param_list(*reference);
   run.inherent = frame.inherent();
   std::vector<GridTile> top = {{"reference (truth)", to_rgba8(frame.truth())}};
   std::vector<GridTile> bottom = {{"classes: traceable/missing/sky", class_map(frame.classes(), w, h)}};

@@ -51,8 +51,7 @@ nlohmann::json class_json(const ClassFigures& f, PixelClass c) {
 }
 
 nlohmann::json technique_json(const TechniqueResult& r) {
-  nlohmann::json params = nlohmann::json::object();
-  for (const auto& [key, value] : r.params) params[key] = param_value_json(value);
+  nlohmann::json params = params_json(r.params);
   nlohmann::json passes = nlohmann::json::array();
   for (const auto& p : r.passes) passes.push_back({{"name", p.name}, {"ms", p.ms}});
   return nlohmann::json{
@@ -94,6 +93,7 @@ nlohmann::json run_json(const RunResults& run) {
       {"scene", run.scene},
       {"results", std::move(results)},
       {"inherent_psnr", optional_json(run.inherent_psnr)},
+      {"reference", params_json(run.reference_params)},
       {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
                     {"missing", optional_json(run.inherent.missing)},
                     {"sky", optional_json(run.inherent.sky)}}},
@@ -142,6 +142,12 @@ std::string pad_right(const std::string& s, std::size_t w) {
 }
 
 }  // namespace
+
+nlohmann::json params_json(const std::vector<std::pair<std::string, std::string>>& params) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [key, value] : params) j[key] = param_value_json(value);
+  return j;
+}
 
 std::string db_text(const std::optional<double>& v) { return v ? fixed_text(*v, 2) : std::string("-"); }
 

@@ -53,6 +53,9 @@ struct RunResults {  // one scene at one size
   std::vector<TechniqueResult> results;
   InherentFigures inherent;  // ideal vs truth per class
   std::optional<OracleAgreement> oracles;  // planar vs reference, when planar ran
+  // The reference's parameters ("reference.samples" ...), as its technique's are: the truth a
+  // run was scored against (--set reference.* changes it).
+  std::vector<std::pair<std::string, std::string>> reference_params;
 };
 
 // time_ms.median / floor_ms; 0 when floor_ms is not positive.
@@ -60,6 +63,8 @@ double time_over_floor(const TechniqueResult& r);
 
 // A param value as JSON: integer, floating-point number, boolean, or string.
 nlohmann::json param_value_json(const std::string& text);
+// {key: value} of a parameter list, each value typed by param_value_json.
+nlohmann::json params_json(const std::vector<std::pair<std::string, std::string>>& params);
 
 // The results JSON of ARCHITECTURE §7 (one scene at one size).
 nlohmann::json to_json(const DeviceInfo& device, const std::string& revision,

@@ -80,6 +80,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   out.height = renderer.height();
   out.fps = spec.fps;
   out.truth_every = spec.truth_every;
+  out.reference_params = param_list(reference);
 
   std::vector<TechniqueRun> runs;
   for (const Variant& v : variants) {
@@ -246,8 +247,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
     nlohmann::json regions = nlohmann::json::object();
     for (const auto& ri : s.instability_regions)
       regions[ri.region] = {{"mean", optional_json(ri.mean)}, {"p95", optional_json(ri.p95)}, {"pixels", ri.pixels}};
-    nlohmann::json params = nlohmann::json::object();
-    for (const auto& [key, value] : s.params) params[key] = param_value_json(value);
+    nlohmann::json params = params_json(s.params);
     summary.push_back({{"technique", s.technique},
                        {"label", s.label},
                        {"preset", s.preset},
@@ -268,6 +268,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
           {"height", r.height},
           {"fps", r.fps},
           {"truth_every", r.truth_every},
+          {"reference", params_json(r.reference_params)},
           {"frames", frames},
           {"summary", summary}};
 }

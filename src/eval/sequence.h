@@ -66,6 +66,7 @@ struct SequenceResults {
   int width = 0, height = 0;
   float fps = 0;
   int truth_every = 1;
+  std::vector<std::pair<std::string, std::string>> reference_params;  // the truth's (reference.*)
   std::vector<SequenceFrame> frames;
   std::vector<SequenceSummary> summary;
 };

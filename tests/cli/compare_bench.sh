@@ -65,7 +65,7 @@ python3 - "$tmp" <<'PY'
 import json, math, os, sys
 tmp = sys.argv[1]
 def check_run(run, where, with_device=True):
-    keys = {"size", "scene", "results", "inherent_psnr"} | ({"device", "revision"} if with_device else set())
+    keys = {"size", "scene", "results", "inherent_psnr", "reference"} | ({"device", "revision"} if with_device else set())
     missing = keys - run.keys()
     assert not missing, f"{where}: missing {missing}"
     if with_device:
@@ -73,6 +73,7 @@ def check_run(run, where, with_device=True):
         assert run["device"]["clock"] in ("cpu", "gpu"), where
     assert len(run["size"]) == 2 and all(isinstance(v, int) for v in run["size"]), where
     assert math.isfinite(run["inherent_psnr"]), where
+    assert run["reference"]["reference.samples"] == 16, f"{where}: the --set reference.samples=16 not recorded"
     assert run["results"], f"{where}: no results"
     for r in run["results"]:
         need = {"technique", "params", "time_ms", "passes", "floor_ms", "error", "nonfinite"}
