@@ -274,11 +274,17 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
 }
 
 std::string sequence_table(const SequenceResults& r) {
-  std::string o;
-  char line[256];
-  std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s %12s\n", "technique", "mean PSNR", "flicker mean",
-                "flicker p95", "x truth", "disocc. PSNR", "elsewhere");
-  o += line;
+  // The first column as wide as its longest label (a sweep's labels are long), the figures fixed.
+  std::size_t width = 28;
+  for (const SequenceSummary& s : r.summary) width = std::max(width, s.label.size());
+  const auto row = [width](const std::string& label, const std::vector<std::string>& cells) {
+    std::string line = label + std::string(width - label.size(), ' ');
+    const int w[] = {10, 12, 12, 12, 12, 12};
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      line += " " + std::string(cells[c].size() < static_cast<std::size_t>(w[c]) ? w[c] - cells[c].size() : 0, ' ') + cells[c];
+    return line + "\n";
+  };
+  std::string o = row("technique", {"mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere"});
   auto num = [](const std::optional<double>& v, const char* f) {
     char b[32];
     if (!v) return std::string("-");
@@ -290,12 +296,9 @@ std::string sequence_table(const SequenceResults& r) {
     int n = 0;
     for (const auto& p : s.convergence)
       if (p && std::isfinite(*p)) sum += *p, ++n;
-    std::snprintf(line, sizeof line, "%-28s %10s %12s %12s %12s %12s %12s\n", s.label.c_str(),
-                  num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB").c_str(),
-                  num(s.instability_mean, "%.5f").c_str(), num(s.instability_p95, "%.5f").c_str(),
-                  num(s.change_ratio, "%.2f").c_str(),
-                  num(s.disoccluded_psnr, "%.2f dB").c_str(), num(s.elsewhere_psnr, "%.2f dB").c_str());
-    o += line;
+    o += row(s.label, {num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB"), num(s.instability_mean, "%.5f"),
+                       num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
+                       num(s.elsewhere_psnr, "%.2f dB")});
   }
   return o;
 }
