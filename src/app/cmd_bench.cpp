@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -155,18 +154,18 @@ void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
         if (k == key) return v;
       return std::string();
     };
-    const auto number = [](const std::string& v) -> std::optional<double> {
-      double d = 0;
-      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), d);
-      return ec == std::errc() && end == v.data() + v.size() ? std::optional(d) : std::nullopt;
+    struct Axis {
+      std::vector<std::string> values;  // in order of appearance
+      bool numeric = true;              // every value a number (param_value_json's typing)
     };
-    std::map<std::string, std::vector<std::string>> values;  // per x key: its values, in order
+    std::map<std::string, Axis> axes;  // per x key
     for (std::size_t i = 0; i < run.results.size(); ++i) {
       if (variants[i].swept_keys.empty()) continue;
-      const std::string& key = variants[i].swept_keys.front();
-      std::vector<std::string>& seen = values[key];
-      const std::string v = param(run.results[i], key);
-      if (std::find(seen.begin(), seen.end(), v) == seen.end()) seen.push_back(v);
+      Axis& axis = axes[variants[i].swept_keys.front()];
+      const std::string v = param(run.results[i], variants[i].swept_keys.front());
+      if (std::find(axis.values.begin(), axis.values.end(), v) != axis.values.end()) continue;
+      axis.values.push_back(v);
+      axis.numeric = axis.numeric && param_value_json(v).is_number();
     }
     for (std::size_t i = 0; i < run.results.size(); ++i) {
       const std::vector<std::string>& keys = variants[i].swept_keys;
@@ -176,12 +175,12 @@ void write_plots(const PlotPlan& plan, const std::vector<RunResults>& runs,
       for (std::size_t k = 1; k < keys.size(); ++k) name += (k == 1 ? " at " : ", ") + keys[k] + "=" + param(t, keys[k]);
       auto it = std::find_if(sweep.series.begin(), sweep.series.end(), [&](const PlotSeries& s) { return s.name == name; });
       if (it == sweep.series.end()) { sweep.series.push_back({name, {}, {}, true}); it = sweep.series.end() - 1; }
-      const std::vector<std::string>& all = values[keys.front()];
-      const bool numeric = std::all_of(all.begin(), all.end(), [&](const std::string& v) { return number(v).has_value(); });
+      const Axis& axis = axes[keys.front()];
       const std::string v = param(t, keys.front());
-      const double x = numeric ? *number(v) : static_cast<double>(std::find(all.begin(), all.end(), v) - all.begin());
+      const double x = axis.numeric ? param_value_json(v).get<double>()
+                                    : static_cast<double>(std::find(axis.values.begin(), axis.values.end(), v) - axis.values.begin());
       it->points.push_back({x, t.time_ms.median});
-      if (!numeric) it->labels.push_back(v);
+      if (!axis.numeric) it->labels.push_back(v);
     }
     write(*sweep_path, sweep);
   }
