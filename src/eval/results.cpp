@@ -279,9 +279,6 @@ std::string results_csv(const std::vector<RunResults>& runs) {
   return out;
 }
 
-namespace {
-
-// Columns padded to their widest cell: the first left-aligned, the others right-aligned.
 std::string format_table(const std::vector<std::string>& header,
                          const std::vector<std::vector<std::string>>& rows) {
   for (const auto& row : rows)  // a row and its header are written side by side: keep them equal
@@ -305,6 +302,8 @@ std::string format_table(const std::vector<std::string>& header,
   for (const auto& row : rows) out += line(row);
   return out;
 }
+
+namespace {
 
 std::string percent_text(const std::optional<double>& v) {
   return v ? fixed_text(*v * 100.0, 1) + "%" : std::string("-");

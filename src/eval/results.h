@@ -88,6 +88,9 @@ std::string breakdown_table(const RunResults& run, const std::vector<std::string
 
 // A figure that may be absent: null when it is (and, as nlohmann writes them, when not finite).
 nlohmann::json optional_json(const std::optional<double>& v);
+// A text table: columns padded to their widest cell, the first left-aligned, the others
+// right-aligned, a rule under the header; every row has the header's cell count.
+std::string format_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
 // A dB figure for tables and messages: two decimals, "-" for an empty set.
 std::string db_text(const std::optional<double>& v);
 // {"renderer", "version", "clock"}.

@@ -274,33 +274,23 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
 }
 
 std::string sequence_table(const SequenceResults& r) {
-  // The first column as wide as its longest label (a sweep's labels are long), the figures fixed.
-  std::size_t width = 28;
-  for (const SequenceSummary& s : r.summary) width = std::max(width, s.label.size());
-  const auto row = [width](const std::string& label, const std::vector<std::string>& cells) {
-    std::string line = label + std::string(width - label.size(), ' ');
-    const int w[] = {10, 12, 12, 12, 12, 12};
-    for (std::size_t c = 0; c < cells.size(); ++c)
-      line += " " + std::string(cells[c].size() < static_cast<std::size_t>(w[c]) ? w[c] - cells[c].size() : 0, ' ') + cells[c];
-    return line + "\n";
-  };
-  std::string o = row("technique", {"mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere"});
   auto num = [](const std::optional<double>& v, const char* f) {
     char b[32];
     if (!v) return std::string("-");
     std::snprintf(b, sizeof b, f, *v);
     return std::string(b);
   };
+  std::vector<std::vector<std::string>> rows;
   for (const SequenceSummary& s : r.summary) {
     double sum = 0;
     int n = 0;
     for (const auto& p : s.convergence)
       if (p && std::isfinite(*p)) sum += *p, ++n;
-    o += row(s.label, {num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB"), num(s.instability_mean, "%.5f"),
-                       num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
-                       num(s.elsewhere_psnr, "%.2f dB")});
+    rows.push_back({s.label, num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB"), num(s.instability_mean, "%.5f"),
+                    num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
+                    num(s.elsewhere_psnr, "%.2f dB")});
   }
-  return o;
+  return format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere"}, rows);
 }
 
 std::string sequence_svg(const SequenceResults& r) {
