@@ -219,11 +219,18 @@ int run_bench(const BenchOptions& o) {
   if (o.frames < 1 || o.frames > 10000) throw InputError("--frames must be in [1, 10000].");
   if (o.warmup < 0 || o.warmup > 1000) throw InputError("--warmup must be in [0, 1000].");
   std::vector<std::pair<int, int>> sizes;
-  for (const std::string& s : split_list(o.sizes, "size")) sizes.push_back(parse_size(s));
+  for (const std::string& s : split_list(o.sizes, "size")) {
+    sizes.push_back(parse_size(s));
+    if (std::count(sizes.begin(), sizes.end(), sizes.back()) > 1)  // "1080p,1920x1080"
+      throw InputError("size list names " + std::to_string(sizes.back().first) + "x" +
+                       std::to_string(sizes.back().second) + " twice.");
+  }
   std::vector<std::string> scene_names = o.scene_list;
   if (!o.scenes.empty())
     for (const std::string& s : split_list(o.scenes, "scene")) scene_names.push_back(s);
   if (scene_names.empty()) scene_names.push_back("gallery");
+  for (auto it = scene_names.begin(); it != scene_names.end(); ++it)  // --scene X and --scenes X
+    if (std::find(scene_names.begin(), it, *it) != it) throw InputError("scene '" + *it + "' is given twice.");
   require_output_files({{"--json", o.json}, {"--csv", o.csv}, {"--plot", o.plot}}, scene_names);
   // Every scene is loaded up front, and each size is a full run: bound both lists.
   for (const auto& [what, n] : {std::pair{"sizes", sizes.size()}, {"scenes", scene_names.size()}})

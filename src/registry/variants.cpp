@@ -31,6 +31,9 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
     const std::size_t comma = text.find(',', start);
     std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     if (item.empty()) throw InputError(what + " list '" + text + "' has an empty item.");
+    // A repeat would run (or print) the same thing twice, as rows a reader takes for two.
+    if (std::find(out.begin(), out.end(), item) != out.end())
+      throw InputError(what + " list names '" + item + "' twice.");
     out.push_back(item);
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -81,10 +84,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
     for (const std::string& set : sets)
       if (split_assignment(set).first == key)
         throw InputError("'" + key + "' is both set (--set) and swept (--sweep).");
-    std::vector<std::string> list = split_list(values, "sweep");
-    std::set<std::string> listed;
-    for (const std::string& v : list)
-      if (!listed.insert(v).second) throw InputError("--sweep '" + key + "' lists the value '" + v + "' twice.");
+    std::vector<std::string> list = split_list(values, "--sweep '" + key + "'");  // a value twice: refused
     sweep_of[technique_of(key)].push_back({key, std::move(list)});
   }
 
@@ -116,8 +116,9 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
     }
     out.insert(out.end(), vs.begin(), vs.end());
   }
-  for (const std::string& name : preset_names) {
-    const Preset& p = find_preset(name);
+  for (auto it = preset_names.begin(); it != preset_names.end(); ++it) {
+    const Preset& p = find_preset(*it);
+    if (std::find(preset_names.begin(), it, *it) != it) throw InputError("--preset '" + *it + "' is given twice.");
     out.push_back({p.technique, p.name, p.assignments, {}});
   }
   // Validate every assignment now, before any GL work.

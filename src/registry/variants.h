@@ -18,7 +18,7 @@ struct Variant {
 // Builds and validates the variants (InputError on any unknown technique, key or value):
 //  - each technique once with the --set values that name it, times every --sweep on it
 //    (several sweeps of one technique: their cartesian product);
-//  - each preset as its own variant;
+//  - each preset as its own variant (a preset given twice is an error);
 //  - --set / --sweep keys of a technique that is not run are an error, except `reference.*`.
 std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
                                     const std::vector<std::string>& sets,
@@ -28,7 +28,7 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
 // The --set values that name `technique` (for the reference, say).
 std::vector<std::string> sets_for(const std::string& technique, const std::vector<std::string>& sets);
 
-// "a,b,c" -> {a, b, c}; empty items are an error.
+// "a,b,c" -> {a, b, c}; an empty item or one named twice is an error.
 std::vector<std::string> split_list(const std::string& text, const std::string& what);
 
 // The techniques a command runs: the --techniques list, or (not given) every registered technique

@@ -104,8 +104,8 @@ bad linear.max_steps render --set linear.max_steps=4294967297 --size 32x18 --out
 v=$(seq -s, 1 1000)
 bad variants bench --techniques linear --sweep linear.max_steps=$v --sweep linear.thickness=$v \
   --sweep linear.max_distance=$v --json "$out/b.json"
-bad scenes bench --scenes "$(printf 'gallery,%.0s' $(seq 1000))gallery" --json "$out/b.json"
-bad sizes bench --sizes "$(printf '64x36,%.0s' $(seq 1000))64x36" --json "$out/b.json"
+bad scenes bench --scenes "$(printf 's%d,' $(seq 1000))gallery" --json "$out/b.json"
+bad sizes bench --sizes "$(printf "%dx36," $(seq 64 1064))32x18" --json "$out/b.json"
 # passfloor: unknown modes and kinds, chains and frames out of range, sizes the GL cannot hold.
 bad "pass mode" passfloor --sizes 16x16 --modes cs8x8,cs7x7 --json "$out/p.json"
 bad "pass kind" passfloor --sizes 16x16 --kinds taps9x9 --json "$out/p.json"
@@ -113,7 +113,7 @@ bad "chain length" passfloor --sizes 16x16 --chains 1,0 --json "$out/p.json"
 bad "chain length" passfloor --sizes 16x16 --chains 2.5 --json "$out/p.json"
 bad --frames passfloor --sizes 16x16 --frames 0 --json "$out/p.json"
 bad 40000x8 passfloor --sizes 40000x8 --json "$out/p.json"
-bad "at most 16" passfloor --chains "$(printf '1,%.0s' $(seq 20))1" --json "$out/p.json"
+bad "at most 16" passfloor --chains "$(printf '%d,' $(seq 20))21" --json "$out/p.json"
 bad "chain length" passfloor --sizes 16x16 --chains +3 --json "$out/p.json"
 
 # ---- the verdict's options ---------------------------------------------------------------------
@@ -296,6 +296,13 @@ bad "empty string" render --exposure "" $S --out "$out/x.png"
 # Sweeps that would run fewer or the same variants than they read as.
 bad twice bench --techniques linear --sweep linear.max_steps=8,16 --sweep linear.max_steps=32 --json "$out/b.json"
 bad twice bench --techniques linear --sweep linear.max_steps=8,8 --json "$out/b.json"
+# A technique, preset, scene, size or region given twice would print two rows a reader takes
+# for two different runs.
+bad "names 'hiz' twice" compare --techniques hiz,hiz $S --out "$out/x.png"
+bad "'stochastic-low' is given twice" sequence --techniques none --preset stochastic-low --preset stochastic-low $S --frames 2 --json "$out/s.json"
+bad "names 1920x1080 twice" bench --sizes 1080p,1920x1080 --techniques none --json "$out/b.json"
+bad "'gallery' is given twice" bench --scenes gallery --scene gallery --sizes 32x18 --techniques none --json "$out/b.json"
+bad "names 'planar' twice" compare --scene gallery --regions planar,planar $S --out "$out/x.png"
 bad "both set" bench --techniques linear --set linear.max_steps=8 --sweep linear.max_steps=16,32 --json "$out/b.json"
 # The number that stands for auto inside the table is not a value to write (only "auto" is).
 bad "write auto" render --technique hiz --set hiz.max_iterations=0 $S --out "$out/x.png"
