@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <stb_easy_font.h>
+#include "eval/video.h"
 
 namespace ssr {
 
@@ -88,38 +88,19 @@ RgbaImage8 hit_class_map(const std::vector<HitClass>& hits, const RgbaImageF& ba
   return out;
 }
 
-namespace {
-// Draws text with stb_easy_font (quads) scaled by `scale`, into an RGBA8 image.
-void draw_text(RgbaImage8& im, int x0, int y0, const std::string& text, int scale) {
-  // stb_easy_font needs about 270 bytes of vertices per character (its documentation).
-  std::vector<float> buffer((text.size() + 1) * 270 / sizeof(float) + 16);
-  std::vector<char> str(text.begin(), text.end());
-  str.push_back('\0');
-  const int quads = stb_easy_font_print(0, 0, str.data(), nullptr, buffer.data(),
-                                        static_cast<int>(buffer.size() * sizeof(float)));
-  const float* v = buffer.data();
-  for (int q = 0; q < quads; ++q) {
-    // 4 vertices of 16 bytes (x, y, z, colour) per quad.
-    const float* a = v + q * 16;
-    const int qx0 = static_cast<int>(a[0]), qy0 = static_cast<int>(a[1]);
-    const int qx1 = static_cast<int>(a[8]), qy1 = static_cast<int>(a[9]);
-    for (int y = qy0 * scale; y < qy1 * scale; ++y)
-      for (int x = qx0 * scale; x < qx1 * scale; ++x) {
-        const int px = x0 + x, py = y0 + y;
-        if (px < 0 || py < 0 || px >= im.width || py >= im.height) continue;
-        std::uint8_t* o = &im.pixels[(static_cast<std::size_t>(py) * im.width + px) * 4];
-        o[0] = o[1] = o[2] = 255;
-        o[3] = 255;
-      }
-  }
-}
-}  // namespace
-
 RgbaImage8 make_grid(const std::vector<GridTile>& tiles, int columns) {
   if (tiles.empty()) return {};
   const int tw = tiles[0].image.width, th = tiles[0].image.height;
-  const int scale = tw >= 480 ? 2 : 1;
-  const int strip = 12 * scale + 4, gap = 4;
+  // Labels wrap to the tile's width (a cut label lost its PSNR at 160x90); the strip is as tall
+  // as the longest.
+  const int scale = label_scale(tw);
+  std::vector<std::string> labels;
+  int label_height = 0;
+  for (const GridTile& t : tiles) {
+    labels.push_back(wrap_label(t.label, tw - 3, scale));
+    label_height = std::max(label_height, label_size(labels.back(), scale).second);
+  }
+  const int strip = label_height + 4, gap = 4;
   const int rows = (static_cast<int>(tiles.size()) + columns - 1) / columns;
   RgbaImage8 out{columns * tw + (columns - 1) * gap, rows * (th + strip) + (rows - 1) * gap, {}};
   out.pixels.assign(static_cast<std::size_t>(out.width) * out.height * 4, 40);
@@ -134,7 +115,7 @@ RgbaImage8 make_grid(const std::vector<GridTile>& tiles, int columns) {
         std::uint8_t* o = &out.pixels[(static_cast<std::size_t>(oy + y) * out.width + ox + x) * 4];
         o[0] = o[1] = o[2] = 16;
       }
-    draw_text(out, ox + 3, oy + 2, tiles[t].label, scale);
+    draw_label(out, ox + 1, oy + 1, labels[t], scale);
     for (int y = 0; y < th; ++y)
       std::copy_n(&im.pixels[static_cast<std::size_t>(y) * tw * 4], static_cast<std::size_t>(tw) * 4,
                   &out.pixels[(static_cast<std::size_t>(oy + strip + y) * out.width + ox) * 4]);

@@ -311,11 +311,40 @@ void draw_label(RgbaImage8& im, int x, int y, const std::string& text, int scale
   }
 }
 
+std::string wrap_label(const std::string& text, int max_width, int scale) {
+  const auto fits = [&](const std::string& line) { return label_size(line, scale).first <= max_width; };
+  std::string out, line;
+  const auto flush = [&] {
+    if (!out.empty()) out += '\n';
+    out += line;
+    line.clear();
+  };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const std::size_t end = std::min(text.find(' ', i), text.size());
+    std::string word = text.substr(i, end - i);
+    i = end + 1;
+    if (word.empty() && line.empty()) continue;  // runs of spaces at a line's start
+    if (fits(line.empty() ? word : line + " " + word)) {
+      line = line.empty() ? word : line + " " + word;
+      continue;
+    }
+    if (!line.empty()) flush();
+    for (char c : word) {  // a word wider than a line: cut it where it reaches the edge
+      if (!line.empty() && !fits(line + c)) flush();
+      line += c;
+    }
+  }
+  if (!line.empty() || out.empty()) flush();
+  return out;
+}
+
 RgbaImage8 labelled_panels(const std::vector<std::pair<std::string, RgbaImage8>>& panels) {
   std::vector<RgbaImage8> images;
   for (const auto& [label, image] : panels) {
     images.push_back(image);
-    draw_label(images.back(), 4, 4, label);
+    const int scale = label_scale(image.width);
+    draw_label(images.back(), 4, 4, wrap_label(label, image.width - 8, scale), scale);
   }
   return hstack(images);
 }

@@ -63,7 +63,15 @@ std::pair<int, int> label_size(const std::string& text, int scale = 2);
 // image; readable on any content. Characters outside printable ASCII are drawn as '?'.
 void draw_label(RgbaImage8& im, int x, int y, const std::string& text, int scale = 2);
 
-// Each panel with its label in the top-left corner, stacked with hstack().
+// `text` broken at spaces into lines (joined by '\n') whose label_size() at `scale` is at most
+// `max_width` pixels wide; a word wider than that is cut across lines. A label never runs off its
+// panel, so no figure in it is lost at small sizes.
+std::string wrap_label(const std::string& text, int max_width, int scale);
+// The font scale for labels on panels `width` pixels wide: 2 from 480 up, else 1.
+inline int label_scale(int width) { return width >= 480 ? 2 : 1; }
+
+// Each panel with its label, wrapped to the panel's width, in the top-left corner, stacked with
+// hstack().
 RgbaImage8 labelled_panels(const std::vector<std::pair<std::string, RgbaImage8>>& panels);
 
 }  // namespace ssr

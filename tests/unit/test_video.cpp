@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "eval/grid.h"
 
 namespace fs = std::filesystem;
 using namespace ssr;
@@ -102,6 +103,38 @@ TEST(Video, VstackPutsRowsTopToBottomWithGreyGaps) {
   EXPECT_EQ(px(out, 5, 20)[0], 100);
   EXPECT_EQ(vstack({}).height, 0);
   EXPECT_THROW(vstack({solid(5, 4, 1), solid(4, 4, 1)}), RuntimeError);
+}
+
+// Labels wrap to their panel: at 160x90 the sequence's and compare's labels ran off the panel
+// and lost their last words (a preset's name, the PSNR).
+TEST(Video, WrappedLabelsFitTheirWidthAndKeepEveryCharacter) {
+  const std::string text = "stochastic [stochastic-low]  4.63 ms cpu  an_unbroken_word_wider_than_the_panel";
+  for (int scale : {1, 2})
+    for (int width : {40, 80, 157, 300}) {
+      const std::string wrapped = wrap_label(text, width, scale);
+      std::size_t start = 0, lines = 0;
+      while (start <= wrapped.size()) {
+        const std::size_t end = std::min(wrapped.find('\n', start), wrapped.size());
+        EXPECT_LE(label_size(wrapped.substr(start, end - start), scale).first, width)
+            << "line " << lines << " of '" << wrapped << "' at scale " << scale;
+        ++lines;
+        start = end + 1;
+      }
+      std::string kept = wrapped, want = text;
+      std::erase_if(kept, [](char c) { return c == '\n' || c == ' '; });
+      std::erase_if(want, [](char c) { return c == ' '; });
+      EXPECT_EQ(kept, want) << "width " << width << " scale " << scale;
+      EXPECT_GT(lines, 1u);
+    }
+  EXPECT_EQ(wrap_label("hiz  frame 0", 400, 1), "hiz  frame 0") << "a label that fits is unchanged";
+}
+
+TEST(Video, GridStripGrowsForAWrappedLabel) {
+  const RgbaImage8 tile = solid(160, 90, 128);
+  const RgbaImage8 one_line = make_grid({{"hiz", tile}, {"ppr", tile}}, 2);
+  const RgbaImage8 wrapped = make_grid({{"hiz", tile}, {"stochastic [stochastic-low]  4.63 ms cpu", tile}}, 2);
+  EXPECT_EQ(one_line.width, wrapped.width);
+  EXPECT_EQ(wrapped.height - one_line.height, label_size("x", 1).second) << "one more line of text";
 }
 
 TEST(Video, DrawLabelChangesPixelsInsideItsBoxOnly) {
