@@ -33,8 +33,9 @@ shared uint group_rays;
 
 // The radiance a hit at `uv` sees: the lit colour, or with previous_frame the last frame's
 // final colour where the hit was then (motion vectors), which carries its reflections too.
+// previous_frame is 0 here whenever there is no previous colour (StochasticTechnique::run).
 vec3 hit_radiance(vec2 uv) {
-  if (params.previous_frame != 0 && frame.time.z > 0.5) {
+  if (params.previous_frame != 0) {
     vec2 prev = uv + texelFetch(motion_tex, ivec2(uv * frame.viewport.xy), 0).xy * frame.viewport.zw;
     if (uv_on_screen(prev)) return textureLod(prev_color_tex, prev, 0.0).rgb;
   }

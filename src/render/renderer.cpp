@@ -224,8 +224,24 @@ void Renderer::render(const FrameRequest& request, Technique& technique, ViewMod
   if (decl.reads & kReadPrevColor) keep_color(state);
 }
 
+namespace {
+// The settings the frame's inputs and the techniques depend on: all but the exposure, which only
+// the display pass applies (moving its slider keeps the frame, and every history with it).
+bool same_inputs(FrameSettings a, const FrameSettings& b) {
+  a.exposure = b.exposure;
+  return a == b;
+}
+}  // namespace
+
 void Renderer::render_inputs(const FrameRequest& request, gl::PassTimer* timer) {
-  if (is_current(request)) return;
+  if (is_current(request)) {
+    if (settings.exposure != frame_settings_.exposure) {
+      frame_settings_.exposure = settings.exposure;
+      glNamedBufferSubData(frame_ubo_.id(), offsetof(shared::FrameUniforms, settings) + sizeof(float), sizeof(float),
+                           &settings.exposure);  // settings.y
+    }
+    return;
+  }
   begin_frame(request);
   gbuffer_pass(timer);
   lighting_pass(timer);
@@ -244,14 +260,14 @@ void Renderer::redisplay(ViewMode view, gl::PassTimer* timer) {
 
 bool Renderer::is_current(const FrameRequest& r) const {
   return inputs_valid_ && same_camera(r.camera, camera_) && r.time.index == time_.index &&
-         r.time.seconds == time_.seconds && r.time.cut == time_.cut && settings == frame_settings_;
+         r.time.seconds == time_.seconds && r.time.cut == time_.cut && same_inputs(settings, frame_settings_);
 }
 
 void Renderer::begin_frame(const FrameRequest& request) {
   // History carries over only to the next index of the same sequence, at the same size, in the
   // same scene, with nothing between them that invalidates it.
   const bool continues = serial_ > 0 && inputs_valid_ && request.time.index == time_.index + 1 &&
-                         !request.time.cut && settings == frame_settings_;
+                         !request.time.cut && same_inputs(settings, frame_settings_);
   const float previous_seconds = time_.seconds;
   const glm::mat4 previous_view_proj = matrices_.proj * matrices_.view;
   const glm::mat4 previous_view = matrices_.view;
@@ -415,16 +431,28 @@ Renderer::TechniqueState& Renderer::technique_state(Technique& t, const Techniqu
     s.decls = decl.textures;
     reset = true;
   }
-  if ((decl.reads & kReadPrevColor) && (!s.prev_color || resized)) {
-    s.prev_color = gl::Texture2D(t.name() + " previous colour", GL_RGBA16F, width_, height_);
-    glTextureParameteri(s.prev_color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(s.prev_color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  if (!(decl.reads & kReadPrevColor)) {
+    s.prev_color = gl::Texture2D();  // released: a later resize would have left them stale
+    s.next_color = gl::Texture2D();
+    s.next_color_kept = false;
+  } else if (s.prev_color.width() != width_ || s.prev_color.height() != height_) {
+    for (gl::Texture2D* c : {&s.prev_color, &s.next_color}) {
+      *c = gl::Texture2D(t.name() + " previous colour", GL_RGBA16F, width_, height_);
+      glTextureParameteri(c->id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+      glTextureParameteri(c->id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    }
+    s.next_color_kept = false;
     reset = true;
+  }
+  if (!same_frame) {  // last frame's colour becomes the previous one
+    std::swap(s.prev_color, s.next_color);
+    s.prev_color_valid = s.next_color_kept;
+    s.next_color_kept = false;
   }
   if (reset) {
     for (std::size_t i = 0; i < s.textures.size(); ++i)
       if (s.decls[i].persistent) clear_texture(s.textures[i]);
-    if (s.prev_color) clear_texture(s.prev_color);
+    s.prev_color_valid = s.next_color_kept = false;  // the shaders do not read it then
     t.reset();
   }
   s.serial = serial_;
@@ -462,14 +490,16 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
   };
   rebind();
   FrameContext ctx{width_, height_, posed_scene(), geometry_id_, camera_, matrices_, frame_settings_,
-                   time_, history_valid_, scene_diagonal_, frame_ubo_.id(), gbuffer_, lit_, motion_,
+                   time_, serial_, history_valid_, state.prev_color_valid, scene_diagonal_, frame_ubo_.id(), gbuffer_, lit_, motion_,
                    hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
                    &refraction_, debug ? &debug_ : nullptr, timer, rebind};
   for (gl::Texture2D& tex : state.textures) ctx.textures.push_back(&tex);
-  stage_views_.clear();
-  for (const StageView& v : decl.stage_views)
-    stage_views_.emplace_back(v.view, state.textures.at(static_cast<std::size_t>(v.texture)).id());
   t.run(ctx);
+  // After the run: a history pair's views name the texture this run wrote (declared before it, a
+  // reset in between showed the pair it had just zeroed).
+  stage_views_.clear();
+  for (const StageView& v : t.declare().stage_views)
+    stage_views_.emplace_back(v.view, state.textures.at(static_cast<std::size_t>(v.texture)).id());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
@@ -501,7 +531,10 @@ void Renderer::display_pass(ViewMode view, gl::PassTimer* timer) {
 }
 
 // The technique's composited colour, for its next frame (TEX_PREV_COLOR).
-void Renderer::keep_color(TechniqueState& state) { copy_texture(color_, state.prev_color); }
+void Renderer::keep_color(TechniqueState& state) {
+  copy_texture(color_, state.next_color);
+  state.next_color_kept = true;
+}
 
 RgbaImage8 Renderer::read_display() const {
   return {width_, height_, gl::read_texture<std::uint8_t>(display_, GL_RGBA, GL_UNSIGNED_BYTE, 4)};

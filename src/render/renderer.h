@@ -138,7 +138,11 @@ class Renderer {
     std::uint64_t generation = 0;
     std::vector<TextureDecl> decls;
     std::vector<gl::Texture2D> textures;
-    gl::Texture2D prev_color;
+    // kReadPrevColor: the final colour of the frame before (TEX_PREV_COLOR), and this frame's,
+    // kept after each run and swapped in when the next frame begins (a second run of one frame
+    // still reads the frame before).
+    gl::Texture2D prev_color, next_color;
+    bool prev_color_valid = false, next_color_kept = false;
   };
 
   bool is_current(const FrameRequest& request) const;

@@ -68,7 +68,9 @@ struct TechniqueDecl {
   bool writes_refraction = false;     // glass pixels' refraction (IMG_REFRACTION); else cleared
   std::vector<ViewMode> debug_views;  // the debug image's views it fills (IMG_OUT2); none: cleared
   std::vector<TextureDecl> textures;  // FrameContext::textures, in this order
-  std::vector<StageView> stage_views; // debug views of those textures (also listed in debug_views)
+  // Debug views of those textures (also listed in debug_views). The renderer reads them after
+  // run(): they name the textures the last run wrote (a history pair alternates).
+  std::vector<StageView> stage_views;
   int blend = 0;                      // composite: 0 standard, 1 Roberts (mix(lit, refl, a))
   // Handles planar reflector pixels only (ppr without a fallback, the planar oracle): the
   // breakdown reports every other pixel as not handled instead of scoring what it leaves there.
@@ -114,7 +116,13 @@ struct FrameContext {
   const CameraMatrices& matrices;
   const FrameSettings& settings;
   FrameTime time;
+  // The renderer's frame: the same again when one frame is rendered twice (the viewer showing
+  // another view of it), which must not advance a technique's history a second time.
+  std::uint64_t serial;
   bool history_valid;           // the history resources hold the previous frame of a sequence
+  // kReadPrevColor: TEX_PREV_COLOR holds this technique's final colour of the previous frame
+  // (false on the first frame, after a reset and after a cut: nothing there to read).
+  bool previous_color;
   float scene_diagonal;         // world units: the scene's bounding-box diagonal ("auto" lengths)
   GLuint frame_ubo;             // FrameUniforms, bound at UBO_FRAME
   const GBuffer& gbuffer;

@@ -74,7 +74,7 @@ std::vector<StageView> Denoiser::stage_views(int first, const shared::DenoisePar
                               {ViewMode::Raw, first + kTraceRadiance},
                               {ViewMode::RayLength, first + kSpatialStats},
                               {ViewMode::Spatial, first + kSpatial}};
-  const int t = temporal_slot();
+  const int t = written_;
   if (p.temporal) {
     v.push_back({ViewMode::Temporal, first + t});
     v.push_back({ViewMode::History, first + t + 1});
@@ -118,7 +118,8 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
   glBindTextureUnit(TEX_TRACE_RADIANCE, t(kTraceRadiance).id());
   glBindTextureUnit(TEX_TRACE_RAY, t(kTraceRay).id());
   // Last frame wrote one pair (zeroed by the frame after a reset): read it, write the other.
-  const Slot out = temporal_slot(), in = out == kTemporalA ? kTemporalB : kTemporalA;
+  const auto other = [](Slot s) { return s == kTemporalA ? kTemporalB : kTemporalA; };
+  const Slot out = frame.serial == written_serial_ ? written_ : other(written_), in = other(out);
   const auto next = [](Slot s) { return static_cast<Slot>(s + 1); };
   // Last frame's (variance, frames): the spatial stage's firefly weight and the temporal stage.
   glBindTextureUnit(TEX_HISTORY_STATS, t(next(in)).id());
@@ -144,7 +145,8 @@ void Denoiser::run(const FrameContext& frame, std::span<gl::Texture2D* const> te
     glMemoryBarrier(kStageBarrier);
     glBindSampler(TEX_HISTORY, 0);
     glBindSampler(TEX_HISTORY_STATS, 0);
-    written_ = !written_;
+    written_ = out;
+    written_serial_ = frame.serial;
     radiance = &t(out);
     stats = &t(next(out));
   }

@@ -49,13 +49,14 @@ class Denoiser {
     return trace_divisor == 2 && p.temporal != 0 ? 2 : 1;
   }
   // The stage views (classes, raw, ray length, spatial, and with the temporal stage temporal,
-  // history; variance from the last stage) and the texture each shows in the frame that runs
-  // next, offset by `first` (where the block starts in the technique's textures).
+  // history; variance from the last stage) and the texture each shows after the last run, offset
+  // by `first` (where the block starts in the technique's textures).
   std::vector<StageView> stage_views(int first, const shared::DenoiseParams& p) const;
-  // Stage 2's output slot (radiance; + 1: its stats) in the frame that runs next.
-  Slot temporal_slot() const { return written_ ? kTemporalB : kTemporalA; }
-  // Forget the history: the next frame starts from pair A (which the frame zeroed).
-  void reset() { written_ = false; }
+  // Forget the history: the next frame writes pair A (the frame zeroed both).
+  void reset() {
+    written_ = kTemporalB;
+    written_serial_ = 0;
+  }
 
   void load(const gl::ShaderSource& src);
   // Runs the enabled stages on the block `tex` (kSlotCount textures) and writes the frame's
@@ -67,7 +68,10 @@ class Denoiser {
   gl::Program spatial_, temporal_, bilateral_;
   gl::Buffer ubo_;
   gl::Sampler bilinear_;
-  bool written_ = false;  // the last frame wrote pair A: this one reads it and writes B
+  // The pair the last run wrote (radiance; + 1: its stats) and its frame: a new frame reads it
+  // and writes the other; a second run of the same frame writes it again from the same history.
+  Slot written_ = kTemporalB;
+  std::uint64_t written_serial_ = 0;
 };
 
 }  // namespace ssr

@@ -34,6 +34,7 @@ void Viewer::on_Camera(const std::string& a) {
   auto it = std::find_if(cameras_.begin(), cameras_.end(), [&](const Camera& k) { return k.name == a; });
   if (it == cameras_.end()) throw InputError("the scene has no camera '" + a + "'.");
   camera_.set(*it);
+  cut_next_ = true;  // a jump: last frame's history shows another view
 }
 
 void Viewer::on_Technique(const std::string& a) { set_technique(sides_[0], a); }
@@ -114,6 +115,7 @@ void Viewer::on_Section(const std::string& a) {  // "NAME open|closed", checked 
 void Viewer::on_Reload(const std::string&) { reload(); }
 
 void Viewer::on_Path(const std::string& a) {
+  const int before = path_;
   if (a == "free") path_ = -1;
   else {
     const Animation& anim = renderer_->scene().animation;
@@ -121,6 +123,7 @@ void Viewer::on_Path(const std::string& a) {
     for (std::size_t i = 0; i < anim.paths.size(); ++i)
       if (anim.paths[i].name == a) path_ = static_cast<int>(i);
   }
+  if (path_ >= 0 && path_ != before) cut_next_ = true;  // the camera jumps onto the new path
   set_time(time_);
 }
 
@@ -167,7 +170,8 @@ void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
 // "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr",
 // "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
-// "frame" (the index of the frame shown: history counts it), "time" (scene seconds)}.
+// "frame" (the index of the frame shown: history counts it), "history" (true: carried over from
+// the frame before; false: restarted by a cut, a jump or a change), "time" (scene seconds)}.
 void Viewer::on_Status(const std::string&) {
   nlohmann::json j;
   j["message"] = status_;
@@ -184,6 +188,7 @@ void Viewer::on_Status(const std::string&) {
     if (panel_shown_ && section_open_[s.section]) open.push_back(s.name);
   j["sections_open"] = open;
   j["frame"] = frame_index_;
+  j["history"] = renderer_->history_valid();
   j["time"] = time_;
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);

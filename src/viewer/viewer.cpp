@@ -181,8 +181,10 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   apply_params(*b, p.params_b);
   const int view = parse_view(p.view);
   if (!p.scene.empty() && p.scene != scene_spec_) load_scene_spec(p.scene, "");
-  if (p.camera) camera_.set(*p.camera);
-  else if (!p.camera_name.empty()) on_Camera(p.camera_name);
+  if (p.camera) {
+    camera_.set(*p.camera);
+    cut_next_ = true;
+  } else if (!p.camera_name.empty()) on_Camera(p.camera_name);
   if (p.lights || p.environment || p.ambient)
     set_lighting(p.lights.value_or(lights_), p.environment.value_or(environment_), p.ambient.value_or(ambient_));
   set_technique(sides_[0], p.technique_a);

@@ -11,6 +11,8 @@
 #include "gl_test_env.h"
 #include "render/renderer.h"
 #include "scene/animation.h"
+#include "scene/builtin_scenes.h"
+#include "techniques/assignments.h"
 #include "scene_builders.h"
 #include "techniques/technique.h"
 #include "registry/registry.h"
@@ -408,4 +410,119 @@ TEST(Frame, TechniqueIsOneSpanAroundItsPasses) {
   for (const gl::PassTime& p : top) top_names.push_back(p.name);
   EXPECT_EQ(top_names, outer);
   EXPECT_GT(technique_ms(top), 0.0);
+}
+
+// ---- A technique's history across what the viewer does between frames ----------------------
+
+namespace {
+
+// Renders frame `index` of a still camera on cornell for `t` and returns the view's linear values.
+RgbaImageF still_frame(Renderer& r, const Scene& s, Technique& t, int index, ViewMode view = ViewMode::Final) {
+  r.render(FrameRequest(s.cameras[0], {index, index / 30.0f}), t, view, nullptr);
+  return r.read_linear();
+}
+
+std::unique_ptr<Technique> stochastic(const Renderer& r, std::vector<std::string> sets) {
+  auto t = create_technique("stochastic");
+  apply_assignments(*t, sets);
+  t->load(r.shaders());
+  return t;
+}
+
+}  // namespace
+
+// The previous colour follows a resize made while previous_frame was off: it was kept at the old
+// size (its state reallocated only on a resize seen with the option on), so the hits read a
+// stretched corner of it. Against a technique switched on at the same frame, which starts fresh.
+TEST(History, PreviousColourFollowsAResizeMadeWhileItWasOff) {
+  const Scene s = make_builtin_scene("cornell");
+  Renderer r(s, kW, kH);
+  auto toggled = stochastic(r, {"stochastic.previous_frame=true"});
+  still_frame(r, s, *toggled, 0);
+  still_frame(r, s, *toggled, 1);
+  apply_assignments(*toggled, {"stochastic.previous_frame=false"});
+  still_frame(r, s, *toggled, 2);
+  r.resize(kW - 20, kH - 14);
+  still_frame(r, s, *toggled, 3);
+  apply_assignments(*toggled, {"stochastic.previous_frame=true"});
+  auto fresh = stochastic(r, {"stochastic.previous_frame=true"});
+  for (int f = 4; f < 8; ++f) {
+    const RgbaImageF a = still_frame(r, s, *toggled, f);
+    const RgbaImageF b = still_frame(r, s, *fresh, f);
+    EXPECT_EQ(max_abs_diff(a, b), 0.0) << "frame " << f;
+  }
+  test::expect_no_gl_errors();
+}
+
+// Switching previous_frame on mid-sequence resets the technique, which zeroes its previous
+// colour; the frame itself goes on, so the shader's "continues" flag said the zeros were last
+// frame's image and every hit read black. With nothing kept yet, hits read the lit colour: the
+// frame is the one previous_frame=false renders.
+TEST(History, PreviousFrameSwitchedOnMidSequenceReadsTheLitColour) {
+  const Scene s = make_builtin_scene("cornell");
+  Renderer r(s, kW, kH);
+  auto toggled = stochastic(r, {});
+  for (int f = 0; f < 3; ++f) still_frame(r, s, *toggled, f);
+  apply_assignments(*toggled, {"stochastic.previous_frame=true"});
+  auto without = stochastic(r, {});
+  const RgbaImageF a = still_frame(r, s, *toggled, 3, ViewMode::Reflection);
+  const RgbaImageF b = still_frame(r, s, *without, 3, ViewMode::Reflection);
+  EXPECT_EQ(max_abs_diff(a, b), 0.0);
+  test::expect_no_gl_errors();
+}
+
+// One frame rendered twice (the viewer showing another view of it, a window shot) runs the
+// technique twice: the second run must not accumulate the frame into its history again, and
+// the stage views show what the run wrote, also on the frame after a reset.
+TEST(History, ASecondRenderOfAFrameLeavesTheHistoryAsOne) {
+  const Scene s = make_builtin_scene("cornell");
+  Renderer r(s, kW, kH);
+  auto once = stochastic(r, {"stochastic.previous_frame=true"});
+  auto twice = stochastic(r, {"stochastic.previous_frame=true"});
+  for (int f = 0; f < 6; ++f) {
+    const RgbaImageF a = still_frame(r, s, *once, f);
+    still_frame(r, s, *twice, f, ViewMode::History);
+    still_frame(r, s, *twice, f, ViewMode::Temporal);
+    const RgbaImageF b = still_frame(r, s, *twice, f);
+    EXPECT_EQ(max_abs_diff(a, b), 0.0) << "frame " << f;
+  }
+  // A parameter change after an odd number of frames: the temporal view named the pair the
+  // reset had just zeroed (black), not the one the frame wrote.
+  for (Technique* t : {once.get(), twice.get()}) apply_assignments(*t, {"stochastic.history=20"});
+  still_frame(r, s, *once, 6);  // both reset here; `twice` twice over
+  auto fresh = stochastic(r, {"stochastic.previous_frame=true", "stochastic.history=20"});
+  for (ViewMode v : {ViewMode::Temporal, ViewMode::History}) {
+    const RgbaImageF a = still_frame(r, s, *once, 6, v);
+    const RgbaImageF b = still_frame(r, s, *fresh, 6, v);
+    EXPECT_EQ(max_abs_diff(a, b), 0.0) << view_info(v).name;
+    double sum = 0;
+    for (float x : a.pixels) sum += x;
+    EXPECT_GT(sum, 0.0) << view_info(v).name << " is black";
+  }
+  test::expect_no_gl_errors();
+}
+
+// The exposure is the display's alone: changing it keeps the frame and every history (it reset
+// them all, so moving the viewer's slider threw away the convergence), and the new exposure
+// shows at once, on the same frame too.
+TEST(Frame, ExposureKeepsTheHistoryAndShowsAtOnce) {
+  const Scene s = wall_scene();
+  Renderer r(s, kW, kH);
+  HistoryProbe probe;
+  const Camera& c = s.cameras[0];
+  r.render(FrameRequest(c, {0, 0.0f}), probe, ViewMode::Final, nullptr);
+  r.render(FrameRequest(c, {1, 0.04f}), probe, ViewMode::Final, nullptr);
+  const RgbaImageF before = r.read_linear();
+  const RgbaImage8 before8 = r.read_display();
+  r.settings.exposure = 2.0f;
+  r.render(FrameRequest(c, {1, 0.04f}), probe, ViewMode::Final, nullptr);  // the same frame
+  EXPECT_EQ(max_abs_diff(before, r.read_linear()), 0.0) << "the linear values do not take the exposure";
+  EXPECT_NE(before8.pixels, r.read_display().pixels) << "the display does";
+  r.render(FrameRequest(c, {2, 0.08f}), probe, ViewMode::Final, nullptr);
+  EXPECT_EQ(probe.resets, 1);
+  EXPECT_TRUE(probe.history_valid);
+  r.settings.reflective_f0 = 0.5f;  // a setting the frame's inputs depend on still restarts it
+  r.render(FrameRequest(c, {3, 0.12f}), probe, ViewMode::Final, nullptr);
+  EXPECT_EQ(probe.resets, 2);
+  test::expect_no_gl_errors();
 }

@@ -156,8 +156,10 @@ assert s[3] == [], 'a hidden panel shows no section'
 PY
 # A window-shot draws the window again without advancing: the same frame index and scene time
 # while playing, and the same image (it once drew one more frame, a step of time and of history).
-printf 'technique stochastic\npath dolly\nplay\nframes 3\nstatus\nwindow-shot %s\nwindow-shot %s\nstatus\n' \
-  "$PWD/shot1.png" "$PWD/shot2.png" > shots.txt
+# Nor does a window-shot of another view (the view was part of the frame's key: stochastic ran
+# again on the frame and accumulated it into its history twice).
+printf 'technique stochastic\npath dolly\nplay\nframes 3\nstatus\nwindow-shot %s\nwindow-shot %s\nstatus\nview history\nwindow-shot %s\nview final\nwindow-shot %s\n' \
+  "$PWD/shot1.png" "$PWD/shot2.png" "$PWD/shot3.png" "$PWD/shot4.png" > shots.txt
 view --scene cornell --size 160x90 --script shots.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
 python3 - <<'PY'
 import json, zlib
@@ -173,6 +175,16 @@ def pixels(path):  # the PNG's decompressed rows (both shots are written alike)
         i += 12 + n
     return zlib.decompress(out)
 assert pixels('shot1.png') == pixels('shot2.png'), 'the second window-shot shows another frame'
+assert pixels('shot1.png') == pixels('shot4.png'), 'a window-shot of another view advanced the history'
+PY
+# Jumping to a named camera or onto a path is a cut: the history restarts (it carried the old
+# view's, worse than none). Moving along a path carries it.
+printf 'frames 3\nstatus\ncamera corner\nframes 1\nstatus\nframes 1\nstatus\npath free\nframes 1\npath dolly\nframes 1\nstatus\n' > jump.txt
+view --scene cornell --size 160x90 --script jump.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - <<'PY'
+import json
+s = [json.loads(l.split('status ', 1)[1])['history'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
+assert s == [True, False, True, False], f'history carried after frames, camera, frames, path: {s}'
 PY
 # `truth now` with no reference shown says so (it did nothing without a word).
 printf 'technique-b hiz\ncompare split\nframes 1\ntruth now\nstatus\n' > truth-now.txt
