@@ -57,7 +57,7 @@ void Viewer::on_Compare(const std::string& a) {
 }
 
 void Viewer::on_Split(const std::string& a) {
-  split_ = std::stof(a);
+  split_ = static_cast<float>(std::stod(a));  // checked in [0, 1] (stof threw on 1e-50)
   compare_ = CompareSplit;
 }
 
@@ -77,9 +77,21 @@ void Viewer::on_Exposure(const std::string& a) { set_frame_setting(renderer_->se
 void Viewer::on_ReflectiveF0(const std::string& a) {
   set_frame_setting(renderer_->settings, "reflective_f0", std::stod(a));  // the table's range, one sentence
 }
-void Viewer::on_Ambient(const std::string& a) { set_lighting(lights_, environment_, std::stof(a)); }
+void Viewer::on_Ambient(const std::string& a) {
+  const double v = std::stod(a);  // checked >= 0 and finite
+  if (v > 1e6) throw InputError("ambient '" + a + "' must be in [0, 1e6], as in a scene file.");
+  set_lighting(lights_, environment_, static_cast<float>(v));
+}
 void Viewer::on_Frames(const std::string& a) { frames_left_ = std::stoi(a); }
-void Viewer::on_Screenshot(const std::string& a) { save(a); }
+void Viewer::on_Screenshot(const std::string& a) {
+  // Not an empty PNG reported as saved.
+  if (render_w() <= 0 || render_h() <= 0)
+    throw InputError("the grid's cells of a " + std::to_string(image_w_) + "x" + std::to_string(image_h_) +
+                     " image are empty: nothing to save.");
+  if (!composed_) throw InputError("there is no image to save before the first frame (run 'frames 1' first).");
+  render(/*advance=*/false);  // a change since the last frame (a `set`) shows: it saved the image before it
+  save(a);
+}
 
 void Viewer::on_PresetSave(const std::string& a) {
   save_preset(a, capture_preset());
@@ -127,7 +139,17 @@ void Viewer::on_Path(const std::string& a) {
   set_time(time_);
 }
 
-void Viewer::on_Time(const std::string& a) { set_time(std::stof(a)); }
+void Viewer::on_Time(const std::string& a) {
+  const double t = std::stod(a);  // checked >= 0 and finite
+  const float end = renderer_->scene().animation.duration;
+  // As the time slider: within the scene's animation (a later time wrapped to 0 on the next frame).
+  if (t > end) {
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%g", end);
+    throw InputError("time '" + a + "' is past the scene's end (" + bound + " s).");
+  }
+  set_time(static_cast<float>(t));
+}
 void Viewer::on_Play(const std::string&) { playing_ = true; }
 void Viewer::on_Pause(const std::string&) { playing_ = false; }
 

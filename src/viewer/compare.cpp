@@ -158,8 +158,9 @@ void Viewer::render(bool advance) {
   }
   if (!view_offered(view_)) {  // the technique changed: its debug view is gone
     const std::string name = view_names_[static_cast<std::size_t>(view_)];
-    set_status(compare_ == CompareGrid ? "the grid shows final images (its truth has no view '" + name + "'): final image"
-                                       : "view '" + name + "' is not filled by the technique now shown: final image",
+    set_status(compare_ == CompareGrid   ? "the grid shows final images (its truth has no view '" + name + "'): final image"
+               : compare_ == CompareDiff ? "the difference needs view '" + name + "' from both sides: final image"
+                                         : "view '" + name + "' is not filled by the technique now shown: final image",
                true);
     view_ = VIEW_FINAL;
   }
@@ -224,6 +225,12 @@ void Viewer::render(bool advance) {
                        w, h, 1);
     glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        w, h, 1);
+    if (!side_fills_view(i, view_)) {
+      // The display pass shows what this technique left in the debug image (or another's stage
+      // texture): a plain grey half instead, which the overlay labels.
+      const std::uint8_t grey[4] = {48, 48, 48, 255};
+      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, grey);
+    }
     s.has_debug = renderer_->debug_written();
     if (s.has_debug)
       glCopyImageSubData(renderer_->debug().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.debug.id(), GL_TEXTURE_2D, 0, 0, 0, 0,

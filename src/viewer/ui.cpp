@@ -205,10 +205,12 @@ void Viewer::draw_image_overlays() {
   // A side that is not current says so on its part of the image.
   const int n = active_sides();
   for (int i = 0; i < n && view_ != kViewTraceable; ++i) {
-    if (side_current(i)) continue;
     const Side& s = sides_[i];
     std::string what;
-    if (s.request > 0) what = "computing " + s.technique->name() + " ...";
+    if (!side_fills_view(i, view_))  // its half is blank: not data to read as the legend says
+      what = s.technique->name() + " does not produce the '" + view_names_[static_cast<std::size_t>(view_)] + "' view";
+    else if (side_current(i)) continue;
+    else if (s.request > 0) what = "computing " + s.technique->name() + " ...";
     else if (!on_demand(i)) continue;  // every-frame sides are current after this frame
     else if (!s.valid) what = s.technique->name() + ": not computed yet" +
                               (truth_policy_ == TruthPolicy::Rest ? " (once the camera rests)" : " (press 'compute now')");
@@ -684,17 +686,24 @@ std::string Viewer::side_label(int i) const {
 }
 
 // Debug views are offered for the techniques that produce them (their declarations).
-bool Viewer::view_offered(int view) const {
-  if (view == kViewTraceable) return compare_ != CompareGrid;  // the mask is one image
-  if (view >= static_cast<int>(view_table().size())) return true;
+bool Viewer::side_fills_view(int i, int view) const {
+  if (view >= static_cast<int>(view_table().size())) return true;  // the traceable mask
   const ViewInfo& v = view_table()[static_cast<std::size_t>(view)];
   if (!v.debug) return true;
-  if (compare_ == CompareGrid) return false;  // the grid sets A against its truth, which has no debug views
-  for (int i = 0; i < active_sides(); ++i) {
-    const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
-    if (std::find(d.begin(), d.end(), v.mode) != d.end()) return true;
-  }
-  return false;
+  const std::vector<ViewMode> d = sides_[i].technique->declare().debug_views;
+  return std::find(d.begin(), d.end(), v.mode) != d.end();
+}
+
+// A split shows a debug view when either side fills it (the other half says it does not); the
+// difference needs both (against a blank half it would be a picture of the one side).
+bool Viewer::view_offered(int view) const {
+  if (view == kViewTraceable) return compare_ != CompareGrid;  // the mask is one image
+  if (view < static_cast<int>(view_table().size()) && view_table()[static_cast<std::size_t>(view)].debug &&
+      compare_ == CompareGrid)
+    return false;  // the grid sets A against its truth, which has no debug views
+  int filled = 0;
+  for (int i = 0; i < active_sides(); ++i) filled += side_fills_view(i, view) ? 1 : 0;
+  return compare_ == CompareDiff ? filled == active_sides() : filled > 0;
 }
 
 }  // namespace ssr

@@ -139,6 +139,8 @@ class Viewer {
   void draw_magnifier();
   PixelValues inspect(int x, int y) const;  // inspector.h's values of image pixel (x, y)
   bool view_offered(int view) const;
+  // Side i's technique fills `view` (the final image and the non-debug views: every technique).
+  bool side_fills_view(int i, int view) const;
   bool truth_figure_shown() const;  // the grid's A-vs-truth figure is current (with figure_shown())
   // Side i's technique, and where A and B run the same one, the parameters in which it differs
   // from the other side ("hiz max_iterations=8"): the split's and the grid's labels.

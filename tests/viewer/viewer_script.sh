@@ -141,6 +141,20 @@ bad_script bad7.txt 'frames 1\nscreenshot nowhere/x.png\n' 'bad7.txt:2:.*does no
 bad_script bad8.txt 'section nosuch open\n' 'bad8.txt:1:.*panel section .nosuch. is not one of inspector'
 bad_script bad9.txt 'section inspector ajar\n' 'bad9.txt:1:.*not open or closed'
 bad_script bad10.txt 'section inspector\n' 'bad10.txt:1:.*takes two arguments'
+# Found by a later review: values that passed the check crashed the handler (std::stof: exit 1,
+# no line); a time past the scene's end wrapped to 0 without a word; screenshots of nothing
+# were written as empty PNGs and reported saved.
+bad_script bad11.txt 'frames 1\ntime 1e39\n' "bad11.txt:2: time '1e39' is past the scene's end"
+bad_script bad12.txt 'frames 1\ntime 100\n' "bad12.txt:2: time '100' is past"
+bad_script bad13.txt 'frames 1\nambient 1e39\n' 'bad13.txt:2:.*must be in \[0, 1e6\]'
+bad_script bad14.txt 'screenshot first.png\n' 'bad14.txt:1:.*before the first frame'
+bad_script bad15.txt 'resize 1x1\ncompare grid\nframes 1\nscreenshot g1.png\n' 'bad15.txt:4:.*1x1 image are empty'
+printf 'frames 1\nsplit 1e-50\nframes 1\n' > tiny-split.txt
+view --scene cornell --size 160x90 --script tiny-split.txt > log.txt 2>&1 || { echo "split 1e-50 failed"; cat log.txt; exit 1; }
+# A screenshot right after a `set` shows it (it saved the frame before the change).
+printf 'technique hiz\nframes 2\nscreenshot %s\nset hiz.max_iterations=1\nscreenshot %s\n' "$PWD/set1.png" "$PWD/set2.png" > set.txt
+view --scene cornell --size 160x90 --script set.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+if cmp -s set1.png set2.png; then echo "the screenshot after a set shows the image before it"; exit 1; fi
 
 # Panel sections: `section` opens and closes them as a click would; status lists the open ones.
 printf 'frames 1\nstatus\nsection inspector open\nsection scene closed\nsection technique-b closed\nframes 1\nstatus\ncompare split\nframes 1\nstatus\npanel off\nframes 1\nstatus\n' > sections.txt

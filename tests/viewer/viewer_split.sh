@@ -17,6 +17,10 @@ shoot base --technique none
 shoot split --technique none --technique-b linear --split 0.5
 shoot diff --technique none --technique-b linear --diff
 shoot same --technique linear --technique-b linear --diff
+# A debug view only B fills: A's half is plain grey (it showed the debug image's leftovers, read
+# through B's legend as data).
+printf 'view steps\n' > "$outdir/steps.txt"
+shoot steps --technique reference --technique-b linear --split 0.5 --script "$outdir/steps.txt"
 python3 - "$outdir" "$(dirname "$0")" <<'PY'
 import sys
 sys.path.insert(0, sys.argv[2])
@@ -30,7 +34,7 @@ def mad(img1, img2, x0, x1, y0, y1):  # mean absolute difference over RGB of a r
                 s += abs(r1[y][x * bpp + c] - r2[y][x * bpp2 + c]); n += 1
     return s / n
 d = sys.argv[1]
-base, split, diff, same = (read_png(f'{d}/{n}.png') for n in ('base', 'split', 'diff', 'same'))
+base, split, diff, same, steps = (read_png(f'{d}/{n}.png') for n in ('base', 'split', 'diff', 'same', 'steps'))
 w, h = base[0], base[1]
 assert (w, h) == (320, 180) and (split[0], split[1]) == (w, h), 'wrong size'
 left = mad(split, base, 0, w // 2 - 2, 0, h)
@@ -45,5 +49,10 @@ assert distinct > 20 and hot > 100, 'the difference heat map looks blank'
 hot_same = sum(1 for row in same[3] for x in range(w) if row[x * same[2]] != row[x * same[2] + 2])
 print(f'diff linear vs linear: {hot_same} coloured pixels')
 assert hot_same == 0, 'identical techniques must give no heat'
+left = {bytes(steps[3][y][x * steps[2]:x * steps[2] + 3]) for y in range(h) for x in range(w // 2 - 2)}
+right = {bytes(steps[3][y][x * steps[2]:x * steps[2] + 3]) for y in range(h) for x in range(w // 2 + 2, w)}
+print(f'steps view, reference | linear: {len(left)} colours on the left, {len(right)} on the right')
+assert left == {bytes([48, 48, 48])}, f'the half without the view is not plain grey: {sorted(left)[:4]}'
+assert len(right) > 20, 'linear shows no steps'
 PY
 echo "viewer split/diff ok"
