@@ -153,6 +153,10 @@ class Technique {
   virtual const std::string& name() const = 0;
   // The technique's parameters; valid for the technique's lifetime. Needs no GL context.
   virtual ParamSet params() = 0;
+  // The values the last run used, "auto" resolved (the image's and the scene's sizes decide
+  // them): what the viewer shows beside "auto" and starts from when auto is unticked. Before a
+  // run, or for a technique that resolves nothing: params().
+  virtual ParamSet ran_params() { return params(); }
   // (Re)builds GL programs from `src`. Throws RuntimeError with file:line on a compile error,
   // leaving the previous programs in place.
   virtual void load(const gl::ShaderSource& src) = 0;

@@ -22,6 +22,7 @@ class TechniqueWithParams : public Technique {
       : name_(std::move(name)), table_(table) {}
   const std::string& name() const override { return name_; }
   ParamSet params() override { return ParamSet(name_, table_, &params_, &kDefaults); }
+  ParamSet ran_params() override { return ParamSet(name_, table_, &ran_, &kDefaults); }
 
  protected:
   // Uploads `values` (default: params_) to the technique UBO and binds it at UBO_TECHNIQUE.
@@ -31,6 +32,7 @@ class TechniqueWithParams : public Technique {
     glBindBufferBase(GL_UNIFORM_BUFFER, UBO_TECHNIQUE, ubo_.id());
   }
   P params_{};
+  P ran_{};  // run() stores the parameters it ran with, "auto" resolved (ran_params())
 
  private:
   static inline const P kDefaults{};

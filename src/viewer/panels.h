@@ -15,7 +15,9 @@ namespace ssr {
 
 // One widget per parameter (slider with the table's range, checkbox, or combo), the help text
 // as a tooltip, a reset button per parameter and a 'reset all' button. Returns true when a value changed.
-bool draw_param_panel(ParamSet& params);
+// `ran`: the values the technique last ran with, "auto" resolved (Technique::ran_params()): an auto
+// slider shows its value, and unticking auto starts there (else at the range's geometric mean).
+bool draw_param_panel(ParamSet& params, const ParamSet* ran = nullptr);
 
 // The scene's lights: per light its type, position (point) or direction (directional, as yaw and
 // pitch, so it stays a unit vector), colour, intensity and range (point); add and remove within

@@ -605,7 +605,8 @@ void Viewer::technique_panel(int i) {
     if (policy != static_cast<int>(truth_policy_)) truth_policy_ = static_cast<TruthPolicy>(policy);
   }
   ParamSet params = side.technique->params();
-  draw_param_panel(params);
+  const ParamSet ran = side.technique->ran_params();
+  draw_param_panel(params, &ran);
   ImGui::PopID();
 }
 

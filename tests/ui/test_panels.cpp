@@ -30,8 +30,8 @@ struct ParamIds {
   std::vector<ImGuiID> automatic;  // the "auto" checkbox of parameters that take auto, else 0
 };
 
-ImGuiHarness::Draw param_draw(ParamSet& params, ParamIds& ids) {
-  return [&params, &ids] {
+ImGuiHarness::Draw param_draw(ParamSet& params, ParamIds& ids, const ParamSet* ran = nullptr) {
+  return [&params, &ids, ran] {
     ids.reset_all = ImGui::GetID("reset all");
     ids.widget.clear();
     ids.reset.clear();
@@ -41,7 +41,7 @@ ImGuiHarness::Draw param_draw(ParamSet& params, ParamIds& ids) {
       ids.reset.push_back(item_id({static_cast<int>(i)}, "reset"));
       ids.automatic.push_back(params.table()[i].has_auto() ? item_id({static_cast<int>(i)}, "##auto") : 0);
     }
-    return draw_param_panel(params);
+    return draw_param_panel(params, ran);
   };
 }
 
@@ -172,6 +172,26 @@ TEST(ParamPanel, ClicksChangeValuesAndResetAllRestoresDefaults) {
   }
   EXPECT_GT(checkboxes, 0) << "no technique has a checkbox: the test lost its reach";
   EXPECT_GT(combos, 0) << "no technique has a choice: the test lost its reach";
+}
+
+// Unticking "auto" starts from the value auto ran with: it jumped to the range's geometric mean,
+// dda's max_steps from 734 (640x360) to 91, which cut corridor's floor reflections short.
+TEST(ParamPanel, UntickingAutoStartsFromWhatAutoRanWith) {
+  ImGuiHarness ui;
+  auto technique = create_technique("dda");
+  auto last_run = create_technique("dda");  // stands for ran_params() after a frame
+  ParamSet params = technique->params(), ran = last_run->params();
+  const int i = params.find("max_steps");
+  ASSERT_GE(i, 0);
+  ASSERT_TRUE(params.is_auto(static_cast<std::size_t>(i)));
+  ran.set(static_cast<std::size_t>(i), 734);
+  ParamIds ids;
+  const auto draw = param_draw(params, ids, &ran);
+  const auto hits = ui.scan(draw, 10, 3);
+  const ImGuiID box = ids.automatic[static_cast<std::size_t>(i)];
+  EXPECT_TRUE(ui.click(ui.exact(box, hits.at(box), draw).center(), draw));
+  EXPECT_EQ(params.get(static_cast<std::size_t>(i)), 734.0);
+  EXPECT_TRUE(ui.errors().empty()) << ui.errors().front();
 }
 
 // ---- lights ---------------------------------------------------------------------------------
