@@ -190,7 +190,7 @@ void Viewer::on_Inspect(const std::string& a) {
 void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : std::stoi(a); }
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
-// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "computing", "psnr",
+// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "not computed" | "computing", "psnr",
 // "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
 // "frame" (the index of the frame shown: history counts it), "history" (true: carried over from
 // the frame before; false: restarted by a cut, a jump or a change), "time" (scene seconds)}.

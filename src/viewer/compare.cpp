@@ -73,7 +73,7 @@ std::string Viewer::truth_state() const {
   for (int i = 0; i < n; ++i) {
     if (!on_demand(i)) continue;
     if (sides_[i].request > 0) return "computing";
-    state = side_current(i) ? "current" : "stale";
+    state = side_current(i) ? "current" : sides_[i].valid ? "stale" : "not computed";
   }
   return state;
 }

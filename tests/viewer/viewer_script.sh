@@ -151,6 +151,10 @@ bad_script bad14.txt 'screenshot first.png\n' 'bad14.txt:1:.*before the first fr
 bad_script bad15.txt 'resize 1x1\ncompare grid\nframes 1\nscreenshot g1.png\n' 'bad15.txt:4:.*1x1 image are empty'
 printf 'frames 1\nsplit 1e-50\nframes 1\n' > tiny-split.txt
 view --scene cornell --size 160x90 --script tiny-split.txt > log.txt 2>&1 || { echo "split 1e-50 failed"; cat log.txt; exit 1; }
+# A reference never computed is "not computed", not "stale" (the banner said so, the status not).
+printf 'technique reference\ntechnique-b dda\ntruth manual\ncompare split\nframes 1\nstatus\n' > never.txt
+view --scene cornell --size 160x90 --script never.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+grep -q '"truth":"not computed"' log.txt || { echo "an uncomputed truth is not 'not computed'"; cat log.txt; exit 1; }
 # A screenshot right after a `set` shows it (it saved the frame before the change).
 printf 'technique hiz\nframes 2\nscreenshot %s\nset hiz.max_iterations=1\nscreenshot %s\n' "$PWD/set1.png" "$PWD/set2.png" > set.txt
 view --scene cornell --size 160x90 --script set.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
