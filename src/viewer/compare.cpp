@@ -91,9 +91,11 @@ PixelValues Viewer::inspect(int x, int y) const {
     throw InputError("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
                      std::to_string(image_w_) + "x" + std::to_string(image_h_) + " image.");
   if (compare_ == CompareGrid) {  // the cell's own pixel (each cell is a frame of its own)
+    // An odd size's last column or row belongs to no cell (checked before wrapping: column 640
+    // of a 641-wide grid read pixel 0).
+    if (x >= 2 * render_w() || y >= 2 * render_h()) throw InputError("the grid has no cell at that pixel.");
     x %= std::max(render_w(), 1);
     y %= std::max(render_h(), 1);
-    if (x >= render_w() || y >= render_h()) throw InputError("the grid has no cell at that pixel.");
   }
   const int n = active_sides();
   SideImages images[3];

@@ -142,6 +142,7 @@ std::string preset_to_json_text(const ViewerPreset& p) {
   };
   j["technique_a"] = technique(p.technique_a, p.params_a);
   j["technique_b"] = technique(p.technique_b, p.params_b);
+  if (p.params_truth) j["truth"] = technique(truth_name(), *p.params_truth);
   j["compare"] = p.compare;
   j["split"] = json_float(p.split);
   j["diff_scale"] = json_float(p.diff_scale);
@@ -170,7 +171,7 @@ std::string preset_to_json_text(const ViewerPreset& p) {
 ViewerPreset preset_from_json_text(const std::string& text, const std::string& where) {
   const json j = parse_json_object(text, where);
   const JsonReader r(where);
-  r.keys(j, "", {"version", "scene", "camera", "technique_a", "technique_b", "compare", "split",
+  r.keys(j, "", {"version", "scene", "camera", "technique_a", "technique_b", "truth", "compare", "split",
                  "diff_scale", "view", "exposure", "reflective_f0", "lights", "environment", "ambient"});
   if (!j.contains("version")) r.fail_at("version", "is required");
   if (!j["version"].is_number_integer() || j["version"].get<long long>() != kViewerPresetVersion)
@@ -191,6 +192,11 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
     read_technique(r, j["technique_a"], "technique_a", p.technique_a, p.params_a);
   if (j.contains("technique_b"))
     read_technique(r, j["technique_b"], "technique_b", p.technique_b, p.params_b);
+  if (j.contains("truth")) {
+    std::string name;
+    read_technique(r, j["truth"], "truth", name, p.params_truth.emplace());
+    if (name != truth_name()) r.fail_at("truth.name", "must be '" + truth_name() + "', not '" + name + "'");
+  }
   if (j.contains("compare")) p.compare = r.one_of(j["compare"], "compare", compare_mode_names());
   if (j.contains("split")) p.split = r.number(j["split"], "split", 0.0f, 1.0f);
   if (j.contains("diff_scale")) p.diff_scale = r.number(j["diff_scale"], "diff_scale", 0.01f, 1.0f);

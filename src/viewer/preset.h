@@ -12,6 +12,8 @@
 //                                         "cameras" entry (the name then says where it came from)
 //   "technique_a": {"name": "linear", "params": {"max_steps": 64, "depth_interp": true}}
 //   "technique_b": {"name": "none", "params": {}}
+//   "truth": {"name": "reference", "params": {"samples": 4}}   the grid's truth (its name is the
+//                                         registry's truth technique's; written once it exists)
 //       params: parameter names without the technique prefix; numbers, true/false or a
 //       choice's name, checked as --set checks them; names left out take their defaults
 //   "compare": "off"                      a compare mode (commands.h: off, split, diff, grid)
@@ -52,6 +54,7 @@ struct ViewerPreset {
                                       // camera `camera_name`
   std::string technique_a = "linear", technique_b = "none";
   std::vector<std::string> params_a, params_b;  // "name=value", no technique prefix
+  std::optional<std::vector<std::string>> params_truth;  // the grid's truth, when it has one
   std::string compare = "off";        // kCompareModes' names
   float split = 0.5f, diff_scale = 0.25f;
   std::string view = "final";

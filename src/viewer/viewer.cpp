@@ -161,6 +161,7 @@ ViewerPreset Viewer::capture_preset() const {
   p.technique_b = sides_[1].technique->name();
   p.params_a = capture_params(*sides_[0].technique);
   p.params_b = capture_params(*sides_[1].technique);
+  if (sides_[2].technique) p.params_truth = capture_params(*sides_[2].technique);  // the grid's
   p.compare = kCompareModes[compare_].name;
   p.split = std::clamp(split_, 0.0f, 1.0f);  // Ctrl+click on a slider can type beyond its range
   p.diff_scale = std::clamp(diff_scale_, 0.01f, 1.0f);
@@ -179,6 +180,7 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   std::unique_ptr<Technique> a = create_technique(p.technique_a), b = create_technique(p.technique_b);
   apply_params(*a, p.params_a);
   apply_params(*b, p.params_b);
+  if (p.params_truth) apply_params(*create_technique(truth_name()), *p.params_truth);
   const int view = parse_view(p.view);
   if (!p.scene.empty() && p.scene != scene_spec_) load_scene_spec(p.scene, "");
   if (p.camera) {
@@ -193,6 +195,10 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   apply_params(*sides_[1].technique, p.params_b);
   compare_ = parse_compare_mode(p.compare);
   ensure_grid_truth();
+  if (p.params_truth) {  // the grid's truth, made now if the preset's compare mode is not the grid
+    if (!sides_[2].technique) set_technique(sides_[2], truth_name());
+    apply_params(*sides_[2].technique, *p.params_truth);
+  }
   split_ = p.split;
   diff_scale_ = p.diff_scale;
   view_ = view;

@@ -71,6 +71,7 @@ void expect_same(const ViewerPreset& a, const ViewerPreset& b) {
   EXPECT_EQ(a.technique_b, b.technique_b);
   EXPECT_EQ(a.params_a, b.params_a);
   EXPECT_EQ(a.params_b, b.params_b);
+  EXPECT_EQ(a.params_truth, b.params_truth);
   EXPECT_EQ(a.compare, b.compare);
   EXPECT_EQ(a.split, b.split);
   EXPECT_EQ(a.diff_scale, b.diff_scale);
@@ -130,6 +131,11 @@ ViewerPreset full_preset() {
   apply_params(*b, {"hole_fill=" + std::string(b->params().table()[0].choices.back())});
   p.technique_b = "ppr";
   p.params_b = capture_params(*b);
+  // The grid's truth (its parameters were dropped: A vs truth 18.00 dB with samples=4, 18.27
+  // after a save and load).
+  auto truth = create_technique(truth_name());
+  apply_params(*truth, {"samples=4"});
+  p.params_truth = capture_params(*truth);
   p.compare = "split";
   p.split = 0.3f;
   p.diff_scale = 0.1f;
@@ -283,6 +289,8 @@ TEST(ViewerPreset, BadPresetsAreOneSentenceInputErrors) {
       {"\"scene\": \"\"", "'scene'"},
       {"\"technique_a\": \"linear\"", "'technique_a'"},
       {"\"technique_a\": {}", "'technique_a.name'"},
+      {"\"truth\": {\"name\": \"linear\"}", "'truth.name' must be 'reference'"},
+      {"\"truth\": {\"name\": \"reference\", \"params\": {\"samples\": 0}}", "samples"},
       {"\"technique_b\": {\"name\": \"nope\"}", "'technique_b.name'"},
       {"\"technique_a\": {\"name\": \"linear\", \"mode\": 1}", "'technique_a.mode'"},
       {"\"technique_a\": {\"name\": \"linear\", \"params\": []}", "'technique_a.params'"},
