@@ -46,6 +46,7 @@ struct BenchOptions {
   std::string json, csv, plot;
   std::string gl = "auto";
   std::string shader_dir;  // empty: the embedded shaders
+  FrameOptions frame;      // --exposure, --reflective-f0
 };
 
 constexpr std::size_t kMaxListed = 64;  // scenes, and sizes, per bench
@@ -241,6 +242,7 @@ int run_bench(const BenchOptions& o) {
   for (const std::string& s : scene_names) scenes.push_back(load_scene(s));
   const std::vector<std::string> names = technique_names(o.techniques, oracle_names());
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
+  const FrameSettings settings = frame_settings(o.frame);  // the table's ranges, before any GL
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
@@ -288,6 +290,7 @@ int run_bench(const BenchOptions& o) {
       try {
         if (!renderer) renderer = std::make_unique<Renderer>(scene, w, h, shaders);
         renderer->resize(w, h);
+        renderer->settings = settings;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "ssrlab: skipping %s at %dx%d: %s\n", scene.name.c_str(), w, h, e.what());
         done += variants.size();
@@ -297,7 +300,8 @@ int run_bench(const BenchOptions& o) {
       const Camera& camera = scene.cameras.front();
       progress(done, total, scene.name + " " + size_name(w, h) + " reference");
       auto frame = std::make_unique<ScoredFrame>(*renderer, camera, *reference);
-      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt, param_list(*reference)};
+      RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt, param_list(*reference),
+                     param_list(frame_settings_params(renderer->settings))};
       for (const Variant& v : variants) {
         progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
         EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing);
@@ -339,6 +343,7 @@ Command add_bench_command(CLI::App& app) {
   c->add_option("--json", o->json, "Results JSON.");
   c->add_option("--csv", o->csv, "Results CSV.");
   c->add_option("--plot", o->plot, "Error-vs-time SVG; sweep and resolution plots go beside it.");
+  add_frame_options(c, &o->frame);
   c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   c->add_option("--shaders", o->shader_dir,
                 "Load shaders from this directory instead of the embedded copy (to time another revision's).");

@@ -37,7 +37,7 @@ struct CompareOptions {
   std::string json;
   std::string gl = "auto";
   int frames = 5;
-  float exposure = 0.0f;
+  FrameOptions frame;  // --exposure, --reflective-f0
   bool breakdown = false;
   std::string regions;  // --regions: the breakdown's rows
 };
@@ -53,13 +53,14 @@ int run_compare(const CompareOptions& o) {
   if (image_format_for(o.out) != ImageFormat::Png) throw InputError("the grid is written as a .png.");
   require_output_files({{"--out", o.out}, {"--json", o.json}}, {o.scene});
   if (o.frames < 1 || o.frames > 1000) throw InputError("--frames must be in [1, 1000].");
+  const FrameSettings settings = frame_settings(o.frame);  // the table's ranges, before any GL
   Scene scene = load_scene(o.scene);
   std::vector<std::string> regions;
   if (!o.regions.empty())
     for (const std::string& name : split_list(o.regions, "region"))
       regions.push_back(parse_region(name, static_cast<int>(scene.reflectors.size())).name());
   const bool breakdown = o.breakdown || !regions.empty();
-  if (breakdown && !has_reflective_surfaces(scene, FrameSettings{}.reflective_f0))
+  if (breakdown && !has_reflective_surfaces(scene, settings.reflective_f0))
     throw InputError("--breakdown needs reflective pixels, and scene '" + scene.name + "' has no reflective surface.");
   const Camera camera = o.camera.empty() ? scene.cameras.front() : scene.camera(o.camera);
   const std::vector<std::string> names = technique_names(o.techniques);
@@ -67,8 +68,6 @@ int run_compare(const CompareOptions& o) {
   auto reference = create_technique(truth_name());
   apply_assignments(*reference, sets_for(truth_name(), o.sets));
 
-  FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
   auto ctx = open_gl(o.gl, {{w, h}});
   const std::string clock = ctx->info().software ? "cpu" : "gpu";
   Renderer renderer(scene, w, h);
@@ -84,6 +83,7 @@ int run_compare(const CompareOptions& o) {
   run.height = h;
   run.inherent_psnr = frame.inherent_psnr();
   run.reference_params = param_list(*reference);
+  run.frame_settings = param_list(frame_settings_params(renderer.settings));
   run.inherent = frame.inherent();
   std::vector<GridTile> top = {{"reference (truth)", to_rgba8(frame.truth())}};
   std::vector<GridTile> bottom = {{"classes: traceable/missing/sky", class_map(frame.classes(), w, h)}};
@@ -128,7 +128,7 @@ Command add_compare_command(CLI::App& app) {
   c->add_option("--out", o->out, "The labelled grid (.png).")->required();
   c->add_option("--json", o->json, "Results JSON (README, Verdicts: every field).");
   c->add_option("--frames", o->frames, "Timed frames per technique (after one warm-up).")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
+  add_frame_options(c, &o->frame);
   c->add_flag("--breakdown", o->breakdown, "Also print every region x class of every technique.");
   c->add_option("--regions", o->regions,
                 "The breakdown's rows (implies --breakdown): " + region_names() + ".");

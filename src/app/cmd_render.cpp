@@ -28,6 +28,33 @@ namespace fs = std::filesystem;
 
 namespace ssr {
 
+namespace {
+std::string option_name(const ParamDesc& d) {
+  std::string name = std::string("--") + d.name;
+  std::replace(name.begin(), name.end(), '_', '-');
+  return name;
+}
+}  // namespace
+
+void add_frame_options(CLI::App* command, FrameOptions* o) {
+  const std::span<const ParamDesc> table = frame_settings_table();
+  o->values.assign(table.size(), std::nullopt);  // before the options point into it
+  FrameSettings defaults;
+  const ParamSet p = frame_settings_params(defaults);
+  for (std::size_t i = 0; i < table.size(); ++i)
+    command->add_option(option_name(table[i]), o->values[i],
+                        std::string(table[i].help) + " Range " + p.range_string(i) + ", default " +
+                            p.default_string(i) + (*table[i].unit ? std::string(" (") + table[i].unit + ")." : "."));
+}
+
+FrameSettings frame_settings(const FrameOptions& o) {
+  FrameSettings s;
+  const std::span<const ParamDesc> table = frame_settings_table();
+  for (std::size_t i = 0; i < table.size() && i < o.values.size(); ++i)
+    if (o.values[i]) set_frame_setting(s, table[i].name, *o.values[i], option_name(table[i]));
+  return s;
+}
+
 std::unique_ptr<gl::HeadlessContext> open_gl(const std::string& path,
                                              const std::vector<std::pair<int, int>>& sizes) {
   auto ctx = gl::HeadlessContext::create(gl::parse_backend(path));
@@ -82,7 +109,7 @@ struct RenderOptions {
   std::string view = "final";
   std::string gl = "auto";
   std::string shader_dir;
-  float exposure = 0.0f;
+  FrameOptions frame;  // --exposure, --reflective-f0
 };
 
 int run_render(const RenderOptions& o) {
@@ -130,8 +157,7 @@ int run_render(const RenderOptions& o) {
   }
   auto reference = scored_view ? create_technique(truth_name()) : nullptr;
   if (reference) apply_assignments(*reference, reference_sets);
-  FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
+  const FrameSettings settings = frame_settings(o.frame);  // the table's ranges, before any GL
   const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
   if (scored_view && technique_info(technique_name).truth)
     throw InputError("--view " + o.view + " scores a technique against the reference; name another technique.");
@@ -223,7 +249,7 @@ Command add_render_command(CLI::App& app) {
   for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
   for (const RenderOnlyViewInfo& v : kRenderOnlyViews) views += "|" + std::string(v.name) + " (" + v.description + ")";
   c->add_option("--view", o->view, "What to write: " + views + ".")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
+  add_frame_options(c, &o->frame);
   c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
   c->add_option("--shaders", o->shader_dir, "Load shaders from this directory instead of the embedded copy.");
   return {c, [o] { return run_render(*o); }};

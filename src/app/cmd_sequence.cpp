@@ -55,7 +55,7 @@ struct SequenceOptions {
   std::string size = "320x180";
   int truth_every = 1;
   float fps = 30.0f;
-  float exposure = 0.0f;
+  FrameOptions frame;  // --exposure, --reflective-f0
   std::string json, out, video, plot;
   std::string gl = "auto";
 };
@@ -137,8 +137,7 @@ int run_sequence_command(const SequenceOptions& o) {
     }
   } cleanup{frames_tmp};
 
-  FrameSettings settings;
-  set_frame_setting(settings, "exposure", o.exposure, "--exposure");  // the table's range, before any GL
+  const FrameSettings settings = frame_settings(o.frame);  // the table's ranges, before any GL
   auto ctx = open_gl(o.gl, {{w, h}});
   const gl::ContextInfo& gi = ctx->info();
   Renderer renderer(scene, w, h);
@@ -192,7 +191,7 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
   c->add_option("--fps", o->fps, "Frames per second of scene time, in [0.01, 1000].")->capture_default_str();
-  c->add_option("--exposure", o->exposure, "Exposure in stops before tone mapping, in [-20, 20].")->capture_default_str();
+  add_frame_options(c, &o->frame);
   c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();
   c->add_option("--out", o->out, "A new (or empty) directory for the labelled PNG frames.");
   c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");

@@ -94,6 +94,7 @@ nlohmann::json run_json(const RunResults& run) {
       {"results", std::move(results)},
       {"inherent_psnr", optional_json(run.inherent_psnr)},
       {"reference", params_json(run.reference_params)},
+      {"frame", params_json(run.frame_settings)},
       {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
                     {"missing", optional_json(run.inherent.missing)},
                     {"sky", optional_json(run.inherent.sky)}}},

@@ -56,6 +56,9 @@ struct RunResults {  // one scene at one size
   // The reference's parameters ("reference.samples" ...), as its technique's are: the truth a
   // run was scored against (--set reference.* changes it).
   std::vector<std::pair<std::string, std::string>> reference_params;
+  // The frame settings ("frame.exposure", "frame.reflective_f0"): the exposure moves every
+  // figure (errors are on display values), reflective_f0 which pixels are scored.
+  std::vector<std::pair<std::string, std::string>> frame_settings;
 };
 
 // time_ms.median / floor_ms; 0 when floor_ms is not positive.

@@ -289,9 +289,8 @@ std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, 
   return out;
 }
 
-std::vector<std::pair<std::string, std::string>> param_list(Technique& t) {
+std::vector<std::pair<std::string, std::string>> param_list(const ParamSet& p) {
   std::vector<std::pair<std::string, std::string>> out;
-  ParamSet p = t.params();
   for (std::size_t i = 0; i < p.size(); ++i) out.emplace_back(p.key(i), p.to_string(i));
   return out;
 }

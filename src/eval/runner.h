@@ -128,7 +128,9 @@ std::vector<bool> scored_pixels(const std::vector<std::uint16_t>& material, cons
 // The pixels that do reflection work, from read-back material (4 values a pixel) and depth.
 std::vector<bool> reflective_pixels(const std::vector<std::uint16_t>& material, const std::vector<float>& depth);
 
-// The parameters of a technique as key -> text, in table order (for results).
-std::vector<std::pair<std::string, std::string>> param_list(Technique& t);
+// The parameters of a technique (or of any table: the frame settings) as key -> text, in table
+// order (for results).
+std::vector<std::pair<std::string, std::string>> param_list(const ParamSet& p);
+inline std::vector<std::pair<std::string, std::string>> param_list(Technique& t) { return param_list(t.params()); }
 
 }  // namespace ssr

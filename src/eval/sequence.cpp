@@ -81,6 +81,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   out.fps = spec.fps;
   out.truth_every = spec.truth_every;
   out.reference_params = param_list(reference);
+  out.frame_settings = param_list(frame_settings_params(renderer.settings));
 
   std::vector<TechniqueRun> runs;
   for (const Variant& v : variants) {
@@ -269,6 +270,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
           {"fps", r.fps},
           {"truth_every", r.truth_every},
           {"reference", params_json(r.reference_params)},
+          {"frame", params_json(r.frame_settings)},
           {"frames", frames},
           {"summary", summary}};
 }

@@ -67,6 +67,7 @@ struct SequenceResults {
   float fps = 0;
   int truth_every = 1;
   std::vector<std::pair<std::string, std::string>> reference_params;  // the truth's (reference.*)
+  std::vector<std::pair<std::string, std::string>> frame_settings;    // frame.exposure, frame.reflective_f0
   std::vector<SequenceFrame> frames;
   std::vector<SequenceSummary> summary;
 };

@@ -6,9 +6,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 "$SSRLAB" compare --scene gallery --size 96x54 --frames 1 --out "$tmp/grid.png" --json "$tmp/compare.json" \
-  --preset thesis-lq --set reference.samples=16
+  --preset thesis-lq --set reference.samples=16 --exposure 0.5
 "$SSRLAB" bench --scenes gallery,cornell --sizes 64x36,96x54 --techniques none,linear \
-  --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 \
+  --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 --reflective-f0 0.05 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
 "$SSRLAB" compare --scene glass --size 64x36 --frames 1 --out "$tmp/glass.png" --set reference.samples=4
 # A scene where nothing reflects: every pooled figure is null (no pixel to score), never 100 dB.
@@ -65,7 +65,7 @@ python3 - "$tmp" <<'PY'
 import json, math, os, sys
 tmp = sys.argv[1]
 def check_run(run, where, with_device=True):
-    keys = {"size", "scene", "results", "inherent_psnr", "reference"} | ({"device", "revision"} if with_device else set())
+    keys = {"size", "scene", "results", "inherent_psnr", "reference", "frame"} | ({"device", "revision"} if with_device else set())
     missing = keys - run.keys()
     assert not missing, f"{where}: missing {missing}"
     if with_device:
@@ -74,6 +74,10 @@ def check_run(run, where, with_device=True):
     assert len(run["size"]) == 2 and all(isinstance(v, int) for v in run["size"]), where
     assert math.isfinite(run["inherent_psnr"]), where
     assert run["reference"]["reference.samples"] == 16, f"{where}: the --set reference.samples=16 not recorded"
+    # The frame settings move every figure: recorded as given (compare --exposure 0.5, bench
+    # --reflective-f0 0.05), the others at their defaults.
+    want = {"frame.exposure": 0.5, "frame.reflective_f0": 0.1} if with_device else {"frame.exposure": 0, "frame.reflective_f0": 0.05}
+    assert run["frame"] == want, f"{where}: frame settings {run['frame']}"
     assert run["results"], f"{where}: no results"
     for r in run["results"]:
         need = {"technique", "params", "time_ms", "passes", "floor_ms", "error", "nonfinite"}

@@ -20,7 +20,8 @@ python3 - "$tmp" <<'PY'
 import json, math, os, sys
 tmp = sys.argv[1]
 a = json.load(open(f"{tmp}/a.json"))
-assert {"device", "revision", "scene", "path", "width", "height", "fps", "truth_every", "reference", "frames", "summary"} <= a.keys()
+assert {"device", "revision", "scene", "path", "width", "height", "fps", "truth_every", "reference", "frame", "frames", "summary"} <= a.keys()
+assert a["frame"] == {"frame.exposure": 0, "frame.reflective_f0": 0.1}, a["frame"]
 assert a["reference"]["reference.samples"] > 0 and set(a["reference"]) >= {"reference.seed", "reference.bounces"}, a["reference"]
 assert a["path"] == "cut" and len(a["frames"]) == 8
 assert any(f["cut"] for f in a["frames"]), "the cut path has no cut"
