@@ -235,11 +235,7 @@ bool same_inputs(FrameSettings a, const FrameSettings& b) {
 
 void Renderer::render_inputs(const FrameRequest& request, gl::PassTimer* timer) {
   if (is_current(request)) {
-    if (settings.exposure != frame_settings_.exposure) {
-      frame_settings_.exposure = settings.exposure;
-      glNamedBufferSubData(frame_ubo_.id(), offsetof(shared::FrameUniforms, settings) + sizeof(float), sizeof(float),
-                           &settings.exposure);  // settings.y
-    }
+    sync_exposure();
     return;
   }
   begin_frame(request);
@@ -251,6 +247,20 @@ void Renderer::render_inputs(const FrameRequest& request, gl::PassTimer* timer) 
     copy_texture(gbuffer_.depth, history_->depth);
     copy_texture(gbuffer_.normal_roughness, history_->normal_roughness);
   }
+}
+
+void Renderer::sync_exposure() {
+  if (settings.exposure == frame_settings_.exposure) return;
+  frame_settings_.exposure = settings.exposure;
+  glNamedBufferSubData(frame_ubo_.id(), offsetof(shared::FrameUniforms, settings) + sizeof(float), sizeof(float),
+                       &settings.exposure);  // settings.y
+}
+
+void Renderer::display_color(const gl::Texture2D& color, gl::PassTimer* timer) {
+  sync_exposure();
+  copy_texture(color, color_);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  display_pass(ViewMode::Final, timer);
 }
 
 void Renderer::redisplay(ViewMode view, gl::PassTimer* timer) {

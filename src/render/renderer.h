@@ -83,6 +83,10 @@ class Renderer {
   // Composites the current reflection and refraction targets again (with the last technique's
   // blend) and displays `view`: to show another view of the same frame, or an image copied in.
   void redisplay(ViewMode view, gl::PassTimer* timer = nullptr);
+  // Displays `color` (a composited colour of this frame's size: an earlier run's copy) in the
+  // final view at the current exposure, without running anything: the viewer's slow on-demand
+  // reference keeps its image when only the exposure moves.
+  void display_color(const gl::Texture2D& color, gl::PassTimer* timer = nullptr);
 
   const GBuffer& gbuffer() const { return gbuffer_; }
   const gl::Texture2D& lit() const { return lit_; }
@@ -146,6 +150,7 @@ class Renderer {
   };
 
   bool is_current(const FrameRequest& request) const;
+  void sync_exposure();  // the frame uniforms' exposure to `settings`' (the display's alone)
   void begin_frame(const FrameRequest& request);
   void gbuffer_pass(gl::PassTimer* timer);
   void lighting_pass(gl::PassTimer* timer);

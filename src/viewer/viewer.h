@@ -56,6 +56,7 @@ struct Side {
   bool has_debug = false;   // the technique wrote them this frame (declared, and asked for)
   bool valid = false;       // `copy` holds an image of the current size
   std::string shown_key;    // the frame key of what `copy` shows
+  std::string ran_key;      // its inputs' key (no view, no exposure) and technique key: what `color` holds
   int request = 0;          // on-demand: 2 = asked (the image says "computing"), 1 = run this frame
   std::unique_ptr<gl::PassTimer> timer;
   gl::FrameTimes last_times;
@@ -102,6 +103,7 @@ class Viewer {
   void take_times(Side& s);
   void update_traceable_mask();
   std::string frame_key() const;
+  std::string inputs_key() const;  // frame_key() without the view and the exposure (display only)
   bool side_current(int i) const;  // the side's image shows the current frame and parameters
   bool truth_stale() const;        // an on-demand side (the reference) shows another frame
   bool on_demand(int i) const;

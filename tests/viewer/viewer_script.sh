@@ -156,6 +156,22 @@ view --scene cornell --size 160x90 --script tiny-split.txt > log.txt 2>&1 || { e
 printf 'technique reference\ntechnique-b dda\ntruth manual\ncompare split\nframes 1\nstatus\n' > never.txt
 view --scene cornell --size 160x90 --script never.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
 grep -q '"truth":"not computed"' log.txt || { echo "an uncomputed truth is not 'not computed'"; cat log.txt; exit 1; }
+# The exposure is the display's: the reference stays current (it was traced again, STALE
+# meanwhile) and its half shows the new exposure.
+printf 'technique-b reference\ncompare split\ntruth manual\nframes 1\ntruth now\nframes 2\nstatus\nscreenshot %s\nexposure 1\nframes 1\nstatus\nscreenshot %s\n' \
+  "$PWD/exp0.png" "$PWD/exp1.png" > exposure.txt
+view --scene cornell --size 160x90 --script exposure.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - "$here" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[1])
+from png import read_png
+s = [json.loads(l.split('status ', 1)[1])['truth'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
+assert s == ['current', 'current'], f'truth before and after an exposure change: {s}'
+a, b = read_png('exp0.png'), read_png('exp1.png')
+w, h, bpp = a[0], a[1], a[2]
+right = lambda im: sum(im[3][y][x * bpp] for y in range(h) for x in range(w // 2 + 2, w))
+assert right(b) > right(a), 'the reference half did not take the exposure'
+PY
 # A screenshot right after a `set` shows it (it saved the frame before the change).
 printf 'technique hiz\nframes 2\nscreenshot %s\nset hiz.max_iterations=1\nscreenshot %s\n' "$PWD/set1.png" "$PWD/set2.png" > set.txt
 view --scene cornell --size 160x90 --script set.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
