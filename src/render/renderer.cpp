@@ -210,6 +210,9 @@ void Renderer::bind_frame_inputs() const {
 void Renderer::render(const FrameRequest& request, Technique& technique, ViewMode view,
                       gl::PassTimer* timer) {
   render_inputs(request, timer);  // G-buffer + motion, lighting (once per frame)
+  // What techniques derive from the inputs (back faces, the depth pyramid) is built inside each
+  // one's span, so its time counts it: the viewer's B found A's pyramid built and looked faster.
+  backfaces_built_ = hiz_built_ = false;
   const TechniqueDecl decl = technique.declare();
   if (decl.reads & (kReadPrevLit | kReadPrevDepth | kReadPrevNormal)) ensure_history();
   TechniqueState& state = technique_state(technique, decl);

@@ -33,6 +33,9 @@ namespace ssr {
 // The frame's own timed passes: what every technique pays, not part of its time (bench's
 // technique time, the viewer's plots).
 inline constexpr const char* kFramePasses[] = {"gbuffer", "lighting", "composite", "display"};
+// The first kFrameInputPasses of them draw the frame's inputs: once a frame, under the first
+// technique rendered (render_inputs()); the others run with every technique.
+inline constexpr std::size_t kFrameInputPasses = 2;
 // The technique's time: one span around everything it costs, the inputs it declares (back
 // faces, the Hi-Z pyramid) and its own passes, which nest inside the span.
 inline constexpr const char* kTechniqueSpan = "technique";

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "eval/grid.h"
+#include "render/renderer.h"
 #include "shared/colormap.h"
 
 namespace ssr {
@@ -36,14 +37,14 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
     // "auto" parameters: a checkbox; unticked, the slider starts at what auto ran with (a jump
     // to the range's middle cut dda's rays on corridor from 734 steps to 91), else at the range's
     // geometric mean.
-    const std::optional<double> resolved =
-        ran && d.has_auto() && !ran->is_auto(i) ? std::optional(std::clamp(ran->get(i), d.min, d.max)) : std::nullopt;
+    const bool resolved = ran && d.has_auto() && !ran->is_auto(i);
+    const double resolved_value = resolved ? std::clamp(ran->get(i), d.min, d.max) : before;
     if (d.has_auto()) {
       bool automatic = params.is_auto(i);
       const double middle = std::sqrt(d.min * d.max);
       if (ImGui::Checkbox("##auto", &automatic))
         params.set(i, automatic ? d.auto_value
-                                : resolved.value_or(d.type == ParamType::Float ? middle : std::round(middle)));
+                                : resolved ? resolved_value : d.type == ParamType::Float ? middle : std::round(middle));
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("auto: %s", d.help);
       ImGui::SameLine();
       // The checkbox takes its room from the widget, so the row keeps its width.
@@ -56,7 +57,7 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
     switch (d.type) {
       case ParamType::Float: {
         const bool show_resolved = params.is_auto(i) && resolved;
-        float v = static_cast<float>(show_resolved ? *resolved : before);
+        float v = static_cast<float>(show_resolved ? resolved_value : before);
         // Wide ranges are easier to tune on a logarithmic slider.
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
         if (ImGui::SliderFloat(d.name, &v, static_cast<float>(d.min), static_cast<float>(d.max),
@@ -66,7 +67,7 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
       }
       case ParamType::Int: {
         const bool show_resolved = params.is_auto(i) && resolved;
-        int v = static_cast<int>(show_resolved ? *resolved : before);
+        int v = static_cast<int>(show_resolved ? resolved_value : before);
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
         if (ImGui::SliderInt(d.name, &v, static_cast<int>(d.min), static_cast<int>(d.max),
                              params.is_auto(i) ? (show_resolved ? "auto: %d" : "auto") : "%d", flags))
@@ -381,8 +382,7 @@ StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
   return act;
 }
 
-void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
-                 bool gpu) {
+TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu) {
   const std::size_t n = columns.size();
   std::vector<gl::PassTime> rows;  // each pass once (its name and depth), in the columns' order
   std::vector<double> total(n, 0.0);
@@ -401,6 +401,27 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
       after = at + 1;
     }
   }
+  // The frame's inputs (G-buffer, lighting) render once, under the first side that runs: they
+  // belong to every side's frame, so each column shows them (marked) and its total counts them.
+  // Totals that left them out of B's column made the side that happened to be A look slower.
+  auto own_ms = [&](std::size_t i, const std::string& name) -> std::optional<double> {
+    for (const auto& p : columns[i].passes)
+      if (p.name == name) return p.ms;
+    return std::nullopt;
+  };
+  std::vector<std::string> shared_rows;
+  for (std::size_t k = 0; k < kFrameInputPasses; ++k) {
+    const std::string name = kFramePasses[k];
+    std::optional<double> drawn;
+    for (std::size_t i = 0; i < n && !drawn; ++i) drawn = own_ms(i, name);
+    if (!drawn) continue;
+    shared_rows.push_back(name);
+    for (std::size_t i = 0; i < n; ++i)
+      if (!own_ms(i, name)) total[i] += *drawn;
+  }
+  const auto is_shared = [&](const std::string& name) {
+    return std::find(shared_rows.begin(), shared_rows.end(), name) != shared_rows.end();
+  };
   // The cells as text first, so each column is as wide as its widest cell (a fitted column keeps
   // the width of the first frame it saw: "total" alone, before the passes' rows arrived).
   // Times in three significant digits (four from 1000 ms): the table fits the panel's default
@@ -425,12 +446,23 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
     }
   };
   for (const gl::PassTime& r : rows)
-    row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name, [&](std::size_t i) -> std::optional<double> {
-      for (const auto& p : columns[i].passes)
-        if (p.name == r.name) return p.ms;
-      return std::nullopt;
-    });
+    row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name + (is_shared(r.name) ? " *" : ""),
+        [&](std::size_t i) -> std::optional<double> {
+          if (const auto ms = own_ms(i, r.name)) return ms;
+          if (!is_shared(r.name)) return std::nullopt;
+          for (std::size_t j = 0; j < n; ++j)
+            if (const auto ms = own_ms(j, r.name)) return ms;
+          return std::nullopt;
+        });
   row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
+  return {cells, !shared_rows.empty()};
+}
+
+void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
+                 bool gpu) {
+  const std::size_t n = columns.size();
+  const TimingTable table = timing_table(columns, gpu);
+  const std::vector<std::vector<std::string>>& cells = table.cells;
   const int n_cols = static_cast<int>(1 + 2 * n);
   if (n > 0 && ImGui::BeginTable("passes", n_cols, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
     for (int c = 0; c < n_cols; ++c) {
@@ -447,6 +479,7 @@ void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<flo
       }
     }
     ImGui::EndTable();
+    if (table.shared_inputs) ImGui::TextDisabled("* the frame's inputs: drawn once for every side");
   }
   const float plot_w = std::max(ImGui::GetContentRegionAvail().x, 60.0f);  // ImGui 1.86 draws nothing for -1
   for (std::size_t i = 0; i < n; ++i) {

@@ -64,6 +64,14 @@ struct TimingColumn {
   gl::FrameTimes passes;  // the last frame's
   std::vector<float> history;  // technique ms of the last frames
 };
+// The timing table's text: a header, a row per pass (each pass once, nested passes indented),
+// then "total"; per column its ms and share. The frame's inputs (G-buffer, lighting: drawn once,
+// under the first side) appear in every column, marked "*", and count in every total.
+struct TimingTable {
+  std::vector<std::vector<std::string>> cells;
+  bool shared_inputs = false;  // some rows are marked "*"
+};
+TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu);
 void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
                  bool gpu);
 // A note in the disabled text colour, wrapped at the panel's width (the panel is narrow).

@@ -371,6 +371,13 @@ TEST(Frame, OptionalResourcesOnlyWhenDeclared) {
   names = passes_of(*hiz, 2);
   EXPECT_TRUE(has(names, "hiz pyramid"));
   EXPECT_EQ(r.prev_lit(), nullptr);
+  // A second technique on the same frame (the viewer's B) builds what it reads inside its own
+  // span too: it found A's pyramid built and its time left it out.
+  auto hiz_b = create_technique("hiz");
+  hiz_b->load(r.shaders());
+  names = passes_of(*hiz_b, 2);
+  EXPECT_TRUE(has(names, "hiz pyramid"));
+  EXPECT_FALSE(has(names, "gbuffer")) << "the inputs are drawn once a frame";
   HistoryProbe probe;
   passes_of(probe, 3);
   EXPECT_NE(r.prev_lit(), nullptr);

@@ -156,6 +156,28 @@ TEST(StatusLine, ALongMessageLeavesTheFiguresInPlace) {
   EXPECT_TRUE(ui.errors().empty());
 }
 
+// The frame's inputs render once, under A: B's column showed no G-buffer or lighting rows and a
+// total without them, so whichever side was A looked slower.
+TEST(Timing, TheFramesInputsCountInEverySidesTotal) {
+  const std::vector<TimingColumn> columns = {
+      {"A", "hiz", {{"gbuffer", 0.5}, {"lighting", 0.25}, {"trace", 1.5}}, {}},
+      {"B", "linear", {{"march", 3.0}}, {}},
+  };
+  const TimingTable t = timing_table(columns, true);
+  EXPECT_TRUE(t.shared_inputs);
+  auto find = [&](const std::string& name) {
+    for (const auto& r : t.cells)
+      if (r[0] == name) return r;
+    ADD_FAILURE() << "no row " << name;
+    return std::vector<std::string>(5);
+  };
+  EXPECT_EQ(find("gbuffer *")[3], "0.500") << "B's column shows the shared input";
+  EXPECT_EQ(find("lighting *")[3], "0.250");
+  EXPECT_EQ(find("total")[1], "2.25");
+  EXPECT_EQ(find("total")[3], "3.75") << "B's total counts the inputs too";
+  EXPECT_EQ(find("march")[1], "") << "a technique's own pass is not shared";
+}
+
 TEST(Timing, RowPerPassTotalAndVisiblePlots) {
   ImGuiHarness ui;
   const std::vector<TimingColumn> columns = {
