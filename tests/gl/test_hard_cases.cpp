@@ -225,3 +225,52 @@ TEST(HardSizes, DISABLED_Frame8KStaysFinite) {
   }
   test::expect_no_gl_errors();
 }
+
+// Every parameter of every technique at each end of its range (each choice, both booleans,
+// auto where it takes it), the others at their defaults, over three frames (history: the
+// denoiser's, the previous colour) on the hard cases that stress it most: the lit, reflection and
+// final images and every stage view stay finite, with no GL error. The defaults alone (above)
+// leave a division by a parameter at its range's end unseen.
+TEST(HardCases, EveryParameterAtItsRangeEndsStaysFinite) {
+  constexpr int w = 40, h = 24;
+  for (const char* name : {"hard-mirror-box", "hard-roughness", "hard-depth-range"}) {
+    const Scene scene = make_builtin_scene(name);
+    Renderer r(scene, w, h);
+    const auto t0 = std::chrono::steady_clock::now();
+    std::size_t cases = 0;
+    for (const TechniqueInfo& t : technique_registry()) {
+      if (t.truth) continue;  // the reference's own ranges: test_reference.cpp
+      const std::size_t n = t.create()->params().size();
+      for (std::size_t i = 0; i < n; ++i) {
+        auto probe = t.create();
+        ParamSet p = probe->params();
+        const ParamDesc& d = p.table()[i];
+        std::vector<double> values = {d.min, d.max};
+        if (d.type == ParamType::Choice)
+          for (std::size_t c = 0; c < d.choices.size(); ++c) values.push_back(static_cast<double>(c));
+        if (d.has_auto()) values.push_back(d.auto_value);
+        for (double v : values) {
+          auto tech = t.create();
+          ParamSet q = tech->params();
+          q.set(i, v);
+          const std::string what = std::string(name) + " " + q.key(i) + "=" + q.to_string(i);
+          tech->load(r.shaders());
+          for (int f = 0; f < 3; ++f) {
+            r.debug_outputs = f == 2;  // the last frame runs the variants that write the debug image
+            r.render(FrameRequest(scene.cameras[0], {f, f / 30.0f}), *tech, ViewMode::Final, nullptr);
+            for (const gl::Texture2D* target : {&r.lit(), &r.reflection(), &r.color(), &r.debug()})
+              ASSERT_EQ(test::count_nonfinite(r.read_texture(*target)), 0u) << what << " frame " << f;
+          }
+          r.debug_outputs = false;
+          for (const StageView& s : tech->declare().stage_views) {
+            r.redisplay(s.view);
+            ASSERT_EQ(test::count_nonfinite(r.read_linear()), 0u) << what << " view " << view_info(s.view).name;
+          }
+          ++cases;
+          test::expect_no_gl_errors();
+        }
+      }
+    }
+    std::printf("range ends on %s: %zu cases finite (%.1f s)\n", name, cases, seconds_since(t0));
+  }
+}
