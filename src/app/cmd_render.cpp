@@ -28,21 +28,13 @@ namespace fs = std::filesystem;
 
 namespace ssr {
 
-namespace {
-std::string option_name(const ParamDesc& d) {
-  std::string name = std::string("--") + d.name;
-  std::replace(name.begin(), name.end(), '_', '-');
-  return name;
-}
-}  // namespace
-
 void add_frame_options(CLI::App* command, FrameOptions* o) {
   const std::span<const ParamDesc> table = frame_settings_table();
   o->values.assign(table.size(), std::nullopt);  // before the options point into it
   FrameSettings defaults;
   const ParamSet p = frame_settings_params(defaults);
   for (std::size_t i = 0; i < table.size(); ++i)
-    command->add_option(option_name(table[i]), o->values[i],
+    command->add_option(frame_setting_option(table[i]), o->values[i],
                         std::string(table[i].help) + " Range " + p.range_string(i) + ", default " +
                             p.default_string(i) + (*table[i].unit ? std::string(" (") + table[i].unit + ")." : "."));
 }
@@ -51,7 +43,7 @@ FrameSettings frame_settings(const FrameOptions& o) {
   FrameSettings s;
   const std::span<const ParamDesc> table = frame_settings_table();
   for (std::size_t i = 0; i < table.size() && i < o.values.size(); ++i)
-    if (o.values[i]) set_frame_setting(s, table[i].name, *o.values[i], option_name(table[i]));
+    if (o.values[i]) set_frame_setting(s, table[i].name, *o.values[i], frame_setting_option(table[i]));
   return s;
 }
 

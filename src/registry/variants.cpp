@@ -65,6 +65,14 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
   for (const std::string& t : techniques) create_technique(t);  // unknown names throw
   auto check_owner = [&](const std::string& key) {
     const std::string t = technique_of(key);
+    FrameSettings scratch;
+    const ParamSet frame = frame_settings_params(scratch);
+    if (t == frame.prefix()) {  // "frame.exposure": a frame setting, given by its own option
+      const int i = frame.find(key);
+      if (i < 0) throw InputError("unknown frame setting '" + key + "'.");
+      throw InputError("'" + key + "' is a frame setting, not a technique's parameter: give it as " +
+                       frame_setting_option(frame.table()[static_cast<std::size_t>(i)]) + ".");
+    }
     if (!running.count(t) && !is_truth(t))  // the truth's parameters may be set whatever runs
       throw InputError("parameter '" + key + "' belongs to technique '" + t + "', which is not being run.");
   };
@@ -85,6 +93,24 @@ std::vector<Variant> build_variants(const std::vector<std::string>& techniques,
       if (split_assignment(set).first == key)
         throw InputError("'" + key + "' is both set (--set) and swept (--sweep).");
     std::vector<std::string> list = split_list(values, "--sweep '" + key + "'");  // a value twice: refused
+    // Also one value written two ways (0.1 and 0.10): compared as the parameter stores them.
+    auto probe = create_technique(technique_of(key));
+    ParamSet params = probe->params();
+    const int index = params.find(key);  // unknown: the validation below names the known keys
+    std::vector<std::string> stored;
+    for (const std::string& v : list) {
+      if (index < 0) break;
+      try {
+        params.set_from_string(static_cast<std::size_t>(index), v);
+      } catch (const InputError&) {
+        break;  // a bad value: the validation below says so, after the variant count's check
+      }
+      stored.push_back(params.to_string(static_cast<std::size_t>(index)));
+      const auto first = std::find(stored.begin(), stored.end() - 1, stored.back());
+      if (first != stored.end() - 1)
+        throw InputError("--sweep '" + key + "' gives one value twice ('" + list[static_cast<std::size_t>(first - stored.begin())] +
+                         "' and '" + v + "').");
+    }
     sweep_of[technique_of(key)].push_back({key, std::move(list)});
   }
 

@@ -1,5 +1,6 @@
 #include "render/technique_api.h"
 
+#include <algorithm>
 #include <atomic>
 
 #include "core/errors.h"
@@ -21,6 +22,12 @@ std::span<const ParamDesc> frame_settings_table() {
 
 ParamSet frame_settings_params(FrameSettings& settings) {
   return ParamSet("frame", frame_settings_table(), &settings, &kDefaultSettings);
+}
+
+std::string frame_setting_option(const ParamDesc& d) {
+  std::string name = std::string("--") + d.name;
+  std::replace(name.begin(), name.end(), '_', '-');
+  return name;
 }
 
 void set_frame_setting(FrameSettings& settings, const std::string& key, double value, const std::string& option) {

@@ -104,6 +104,8 @@ ParamSet frame_settings_params(FrameSettings& settings);
 // Sets one ("exposure", ...) through the table: InputError naming the key (or `option`, the
 // command-line option that carried the value, e.g. "--exposure") and the range.
 void set_frame_setting(FrameSettings& settings, const std::string& key, double value, const std::string& option = "");
+// The command-line option of a frame setting's row: "--exposure", "--reflective-f0".
+std::string frame_setting_option(const ParamDesc& d);
 
 // Everything a technique may read for one frame, and its outputs. The frame's inputs are bound
 // at their named slots when run() is called; rebind() restores them (after a technique drew with

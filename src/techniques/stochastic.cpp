@@ -101,7 +101,7 @@ class StochasticTechnique final : public TechniqueWithParams<P> {
     if (p.max_distance == 0.0f) p.max_distance = autos.max_distance();
     if (p.max_iterations == 0) p.max_iterations = autos.hiz_iterations();
     p.glossy_iterations = p.glossy_iterations == 0 ? p.max_iterations : std::min(p.glossy_iterations, p.max_iterations);
-    ran_ = p;
+    record_run(p);
     // No previous colour to read (first frame, a reset, a cut): hits read the lit colour. The
     // frame's own "continues" flag is not enough: a reset zeroes the colour mid-sequence.
     p.previous_frame = p.previous_frame && in.previous_color ? 1 : 0;

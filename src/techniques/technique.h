@@ -22,7 +22,7 @@ class TechniqueWithParams : public Technique {
       : name_(std::move(name)), table_(table) {}
   const std::string& name() const override { return name_; }
   ParamSet params() override { return ParamSet(name_, table_, &params_, &kDefaults); }
-  ParamSet ran_params() override { return ParamSet(name_, table_, &ran_, &kDefaults); }
+  ParamSet ran_params() override { return ran_recorded_ ? ParamSet(name_, table_, &ran_, &kDefaults) : params(); }
 
  protected:
   // Uploads `values` (default: params_) to the technique UBO and binds it at UBO_TECHNIQUE.
@@ -32,13 +32,19 @@ class TechniqueWithParams : public Technique {
     glBindBufferBase(GL_UNIFORM_BUFFER, UBO_TECHNIQUE, ubo_.id());
   }
   P params_{};
-  P ran_{};  // run() stores the parameters it ran with, "auto" resolved (ran_params())
+  // run() records the parameters it ran with, "auto" resolved (ran_params()).
+  void record_run(const P& resolved) {
+    ran_ = resolved;
+    ran_recorded_ = true;
+  }
 
  private:
   static inline const P kDefaults{};
   std::string name_;
   std::span<const ParamDesc> table_;
   gl::Buffer ubo_;
+  P ran_{};
+  bool ran_recorded_ = false;
 };
 
 }  // namespace ssr

@@ -66,7 +66,7 @@ class TracerTechnique : public TechniqueWithParams<P> {
 
   void run(const FrameContext& in) override {
     const P p = resolved(AutoContext::of(in));
-    this->ran_ = p;
+    this->record_run(p);
     const bool compact = p.ray.compact != 0, denoise = p.ray.denoise.enabled != 0;
     // The denoiser's inputs take the debug image's place: no debug variant of that one.
     const bool debug = in.debug != nullptr && !denoise;

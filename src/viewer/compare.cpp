@@ -73,13 +73,18 @@ bool Viewer::side_current(int i) const {
   return s.valid && s.shown_key == frame_key() + "|" + technique_key(*s.technique, frame_index_);
 }
 
+std::string Viewer::side_state(int i) const {
+  const Side& s = sides_[i];
+  return s.request > 0 ? "computing" : side_current(i) ? "current" : s.computed ? "stale" : "not computed";
+}
+
 std::string Viewer::truth_state() const {
   const int n = active_sides();
   std::string state = "none";
   for (int i = 0; i < n; ++i) {
     if (!on_demand(i)) continue;
     if (sides_[i].request > 0) return "computing";
-    state = side_current(i) ? "current" : sides_[i].valid ? "stale" : "not computed";
+    state = side_state(i);
   }
   return state;
 }
@@ -117,7 +122,7 @@ PixelValues Viewer::inspect(int x, int y) const {
       classes = reference_outputs(*s.technique).classes;
     }
   }
-  if (!classes && mask_ref_ && mask_key_ == frame_key()) classes = reference_outputs(*mask_ref_).classes;
+  if (!classes && mask_ref_ && mask_key_ == inputs_key()) classes = reference_outputs(*mask_ref_).classes;
   PixelValues j = inspect_pixel(*renderer_, x, y, images, n, classes, truth);
   for (int i = 0; i < n; ++i) j[side_key(i)]["current"] = side_current(i);
   return j;
@@ -125,7 +130,7 @@ PixelValues Viewer::inspect(int x, int y) const {
 
 // Runs the reference of the mask on demand (or in scripted runs) and turns its classes into an image.
 void Viewer::update_traceable_mask() {
-  const std::string key = frame_key();
+  const std::string key = inputs_key();  // the classes do not depend on the exposure
   if (mask_key_ == key || !(mask_request_ || scripted_)) return;
   mask_request_ = false;
   if (!mask_ref_) {
@@ -203,6 +208,13 @@ void Viewer::render(bool advance) {
   renderer_->debug_outputs = section_open_[SectionInspector] || inspected_;
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
+    if (!side_fills_view(i, view_)) {
+      // A view this side's technique does not produce: a plain grey half, which the overlay
+      // labels (the display pass would show the debug image's leftovers), and nothing to run.
+      const std::uint8_t grey[4] = {48, 48, 48, 255};
+      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, grey);
+      continue;
+    }
     const std::string tkey = technique_key(*s.technique, frame_index_);
     const std::string key = fkey + "|" + tkey;
     if (!advance && s.valid && s.shown_key == key) continue;  // drawn again: already current
@@ -244,17 +256,11 @@ void Viewer::render(bool advance) {
                        w, h, 1);
     glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        w, h, 1);
-    if (!side_fills_view(i, view_)) {
-      // The display pass shows what this technique left in the debug image (or another's stage
-      // texture): a plain grey half instead, which the overlay labels.
-      const std::uint8_t grey[4] = {48, 48, 48, 255};
-      glClearTexImage(s.copy.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, grey);
-    }
     s.has_debug = renderer_->debug_written();
     if (s.has_debug)
       glCopyImageSubData(renderer_->debug().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.debug.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                          w, h, 1);
-    s.valid = true;
+    s.valid = s.computed = true;
     s.shown_key = key;
     s.ran_key = ikey + "|" + tkey;
     take_times(s);

@@ -416,8 +416,8 @@ TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu) {
     for (std::size_t i = 0; i < n && !drawn; ++i) drawn = own_ms(i, name);
     if (!drawn) continue;
     shared_rows.push_back(name);
-    for (std::size_t i = 0; i < n; ++i)
-      if (!own_ms(i, name)) total[i] += *drawn;
+    for (std::size_t i = 0; i < n; ++i)  // a column that did not run (no passes) stays empty
+      if (!own_ms(i, name) && !columns[i].passes.empty()) total[i] += *drawn;
   }
   const auto is_shared = [&](const std::string& name) {
     return std::find(shared_rows.begin(), shared_rows.end(), name) != shared_rows.end();
@@ -449,12 +449,14 @@ TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu) {
     row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name + (is_shared(r.name) ? " *" : ""),
         [&](std::size_t i) -> std::optional<double> {
           if (const auto ms = own_ms(i, r.name)) return ms;
-          if (!is_shared(r.name)) return std::nullopt;
+          if (!is_shared(r.name) || columns[i].passes.empty()) return std::nullopt;
           for (std::size_t j = 0; j < n; ++j)
             if (const auto ms = own_ms(j, r.name)) return ms;
           return std::nullopt;
         });
-  row("total", [&](std::size_t i) -> std::optional<double> { return total[i]; });
+  row("total", [&](std::size_t i) -> std::optional<double> {
+    return columns[i].passes.empty() ? std::nullopt : std::optional(total[i]);  // not run yet: nothing
+  });
   return {cells, !shared_rows.empty()};
 }
 

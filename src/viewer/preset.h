@@ -13,7 +13,8 @@
 //   "technique_a": {"name": "linear", "params": {"max_steps": 64, "depth_interp": true}}
 //   "technique_b": {"name": "none", "params": {}}
 //   "truth": {"name": "reference", "params": {"samples": 4}}   the grid's truth (its name is the
-//                                         registry's truth technique's; written once it exists)
+//                                         registry's truth technique's; written once it exists;
+//                                         left out: its defaults)
 //       params: parameter names without the technique prefix; numbers, true/false or a
 //       choice's name, checked as --set checks them; names left out take their defaults
 //   "compare": "off"                      a compare mode (commands.h: off, split, diff, grid)

@@ -219,7 +219,7 @@ void Viewer::draw_image_overlays() {
     else if (side_current(i)) continue;
     else if (s.request > 0) what = "computing " + s.technique->name() + " ...";
     else if (!on_demand(i)) continue;  // every-frame sides are current after this frame
-    else if (!s.valid) what = s.technique->name() + ": not computed yet" +
+    else if (!s.computed) what = s.technique->name() + ": not computed yet" +
                               (truth_policy_ == TruthPolicy::Rest ? " (once the camera rests)" : " (press 'compute now')");
     else what = s.technique->name() + " is STALE: it shows an earlier view" +
                 (truth_policy_ == TruthPolicy::Rest ? " (recomputed once the camera rests)" : " (press 'compute now')");
@@ -381,11 +381,10 @@ void Viewer::side_panel(double dt) {
       if (compare_ == CompareGrid)  // each cell renders at a quarter of the image: its own figures
         ImGui::TextDisabled("(at the cells' %dx%d, as compare --size %dx%d)", render_w(), render_h(), render_w(),
                             render_h());
-    } else if (const std::string t = truth_state(); t != "none" && t != "current") {
-      // The on-demand side (the reference), A or B: it is the one not current.
-      const int i = on_demand(0) ? 0 : 1;
+    } else if (const int i = on_demand(0) && !side_current(0) ? 0 : on_demand(1) && !side_current(1) ? 1 : -1; i >= 0) {
+      // An on-demand side of this figure (A or B; the grid's truth has a figure of its own).
       ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "PSNR A vs B: - (%s is %s)", sides_[i].technique->name().c_str(),
-                         t.c_str());
+                         side_state(i).c_str());
     } else if (view_ != VIEW_FINAL) {
       ImGui::TextDisabled("PSNR A vs B: in the final view only");
     } else if (!side_current(0) || !side_current(1)) {  // e.g. the image resized under a panel drag
@@ -530,7 +529,7 @@ void Viewer::view_panel() {
     ImGui::SetTooltip("only the views the shown techniques produce; the legend at the top says how to read it");
   if (view_ == kViewTraceable) {
     if (mask_request_) ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "computing...");
-    else if (mask_key_ != frame_key()) {
+    else if (mask_key_ != inputs_key()) {
       if (ImGui::Button("compute traceable mask")) mask_request_ = true;
       ImGui::SameLine();
       ImGui::TextDisabled(mask_key_.empty() ? "not computed" : "stale");
@@ -613,7 +612,7 @@ void Viewer::technique_panel(int i) {
     if (ImGui::Button("compute now")) ui_command(Verb::Truth, "now");
     ImGui::EndDisabled();
     ImGui::SameLine();
-    const std::string state = side.request > 0 ? "computing" : side_current(i) ? "current" : side.valid ? "stale" : "not computed";
+    const std::string state = side_state(i);
     if (state == "current") ImGui::TextDisabled("up to date");
     else ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", state.c_str());
     int policy = static_cast<int>(truth_policy_);

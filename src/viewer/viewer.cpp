@@ -103,7 +103,9 @@ void Viewer::set_technique(Side& side, const std::string& name) {
   side.instrumented = false;
   set_reference_progress(*side.technique, [this](double f) { draw_progress("reference", f); });
   side.valid = false;
+  side.computed = false;
   side.shown_key.clear();
+  side.ran_key.clear();
   side.request = 0;
   side.history.clear();
 }
@@ -198,6 +200,8 @@ void Viewer::apply_preset(const ViewerPreset& p) {
   if (p.params_truth) {  // the grid's truth, made now if the preset's compare mode is not the grid
     if (!sides_[2].technique) set_technique(sides_[2], truth_name());
     apply_params(*sides_[2].technique, *p.params_truth);
+  } else if (sides_[2].technique) {
+    apply_params(*sides_[2].technique, {});  // left out: its defaults, as every parameter left out
   }
   split_ = p.split;
   diff_scale_ = p.diff_scale;
@@ -224,7 +228,11 @@ void Viewer::reload() {
     }
     if (mask_ref_) mask_ref_->load(renderer_->shaders());
     diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
-    for (Side& s : sides_) s.shown_key.clear();
+    for (Side& s : sides_) {  // nothing shown was drawn by these programs: every side runs again
+      s.shown_key.clear();
+      s.ran_key.clear();
+    }
+    psnr_key_.clear();
     set_status("shaders reloaded", false);
   } catch (const std::exception& e) {
     set_status(e.what(), true);  // the last good programs keep running

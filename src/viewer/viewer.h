@@ -55,6 +55,7 @@ struct Side {
   gl::Texture2D debug;      // RGBA16F debug channels of that frame (steps, hits, distance / PPR offsets)
   bool has_debug = false;   // the technique wrote them this frame (declared, and asked for)
   bool valid = false;       // `copy` holds an image of the current size
+  bool computed = false;    // it has run since it was chosen (a resize leaves it stale, not "not computed")
   std::string shown_key;    // the frame key of what `copy` shows
   std::string ran_key;      // its inputs' key (no view, no exposure) and technique key: what `color` holds
   int request = 0;          // on-demand: 2 = asked (the image says "computing"), 1 = run this frame
@@ -103,6 +104,9 @@ class Viewer {
   void take_times(Side& s);
   void update_traceable_mask();
   std::string frame_key() const;
+  // Side i's state for the panel, the banner and status: "computing", "current", "stale" or
+  // "not computed".
+  std::string side_state(int i) const;
   std::string inputs_key() const;  // frame_key() without the view and the exposure (display only)
   bool side_current(int i) const;  // the side's image shows the current frame and parameters
   bool truth_stale() const;        // an on-demand side (the reference) shows another frame

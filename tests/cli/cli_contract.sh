@@ -89,8 +89,11 @@ expect_exit 2 render --shaders "$tmp/empty_shaders" $S --out "$tmp/out.png"
 expect_exit 2 compare --techniques "" $S --out "$tmp/out.png"
 expect_exit 2 bench --techniques linear --sizes 32x18 --sweep linear.max_steps=8,16 --frames 1 --warmup 0 \
   --json "$tmp/out.b-sweep-gallery-32x18.svg" --plot "$tmp/out.b.svg"
-expect_exit 2 bench --scenes gallery,gallery --techniques linear --sizes 32x18,64x36 --frames 1 --warmup 0 \
+# Two scenes whose plots would be one file: two files of one name in two folders.
+for d in one two; do mkdir -p "$tmp/$d"; cp "$TESTDATA/json/minimal.json" "$tmp/$d/s.json"; cp -r "$TESTDATA/json/meshes" "$tmp/$d/"; done
+expect_exit 2 bench --scenes "$tmp/one/s.json,$tmp/two/s.json" --techniques linear --sizes 32x18,64x36 --frames 1 --warmup 0 \
   --plot "$tmp/out.b.svg"
+grep -q "same plot" "$tmp/stderr" || bad "two scenes of one plot name: not the plots' sentence: $(cat "$tmp/stderr")"
 for f in "$TESTDATA"/json/bad_* "$TESTDATA"/obj/bad_*; do
   [ -e "$f" ] || continue
   expect_exit 2 render --scene "$f" $S --out "$tmp/out.png"

@@ -303,7 +303,10 @@ bad "'stochastic-low' is given twice" sequence --techniques none --preset stocha
 bad "names 1920x1080 twice" bench --sizes 1080p,1920x1080 --techniques none --json "$out/b.json"
 bad "'gallery' is given twice" bench --scenes gallery --scene gallery --sizes 32x18 --techniques none --json "$out/b.json"
 bad "names 'planar' twice" compare --scene gallery --regions planar,planar $S --out "$out/x.png"
+bad "gives one value twice ('0.1' and '0.10')" bench --techniques linear --sweep linear.thickness=0.1,0.10 --json "$out/b.json"
+bad "is given twice" bench --scenes "$in/as_input.json,$in/../in/as_input.json" --sizes 32x18 --techniques none --json "$out/b.json"
 # The frame settings are options named after their table's rows, checked against its ranges.
+bad "give it as --reflective-f0" compare --set frame.reflective_f0=0.5 $S --out "$out/x.png"
 bad "--reflective-f0 must be in [0.001, 1], got 2" compare --reflective-f0 2 $S --out "$out/x.png"
 bad "--exposure must be in [-20, 20], got 30" bench --exposure 30 --sizes 32x18 --techniques none --json "$out/b.json"
 bad "both set" bench --techniques linear --set linear.max_steps=8 --sweep linear.max_steps=16,32 --json "$out/b.json"

@@ -176,6 +176,11 @@ TEST(Timing, TheFramesInputsCountInEverySidesTotal) {
   EXPECT_EQ(find("total")[1], "2.25");
   EXPECT_EQ(find("total")[3], "3.75") << "B's total counts the inputs too";
   EXPECT_EQ(find("march")[1], "") << "a technique's own pass is not shared";
+  // A side that has not run (the grid's truth before its first trace) shows nothing, not the
+  // inputs as if it had run.
+  const TimingTable idle = timing_table({columns[0], {"truth", "reference", {}, {}}}, true);
+  for (const auto& r : idle.cells)
+    if (r[0] == "total" || r[0] == "gbuffer *") EXPECT_EQ(r[3], "") << r[0];
 }
 
 TEST(Timing, RowPerPassTotalAndVisiblePlots) {

@@ -194,6 +194,15 @@ TEST(ParamPanel, UntickingAutoStartsFromWhatAutoRanWith) {
   EXPECT_TRUE(ui.errors().empty()) << ui.errors().front();
 }
 
+// Before a run, ran_params() is params() (it was the table's defaults: "auto" for a value set).
+TEST(ParamPanel, RanParamsBeforeARunAreTheParameters) {
+  auto hiz = create_technique("hiz");
+  ParamSet p = hiz->params();
+  const std::size_t i = static_cast<std::size_t>(p.find("max_iterations"));
+  p.set(i, 64);
+  EXPECT_EQ(hiz->ran_params().get(i), 64.0);
+}
+
 // ---- lights ---------------------------------------------------------------------------------
 
 struct LightIds {

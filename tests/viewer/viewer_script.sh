@@ -172,6 +172,22 @@ w, h, bpp = a[0], a[1], a[2]
 right = lambda im: sum(im[3][y][x * bpp] for y in range(h) for x in range(w // 2 + 2, w))
 assert right(b) > right(a), 'the reference half did not take the exposure'
 PY
+# A reference computed, then: a resize leaves it stale (not "not computed"); a shader reload
+# too (its kept image was shown again as current); a view it does not produce is a plain grey
+# half, also when it does not run again (it kept its final image under the view's legend).
+printf 'technique hiz\ntechnique-b reference\ncompare split\ntruth manual\nframes 1\ntruth now\nframes 2\nresize 150x80\nframes 1\nstatus\ntruth now\nframes 2\nreload\nframes 1\nstatus\nview iterations\nframes 1\nscreenshot %s\n' \
+  "$PWD/grey-b.png" > computed.txt
+view --scene cornell --size 160x90 --script computed.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
+python3 - "$here" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[1])
+from png import read_png
+s = [json.loads(l.split('status ', 1)[1])['truth'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
+assert s == ['stale', 'stale'], f'truth after a resize and after a reload: {s}'
+w, h, bpp, rows = read_png('grey-b.png')
+right = {bytes(rows[y][x * bpp:x * bpp + 3]) for y in range(h) for x in range(w // 2 + 2, w)}
+assert right == {bytes([48, 48, 48])}, f'the reference half of the iterations view is not plain grey: {len(right)} colours'
+PY
 # A screenshot right after a `set` shows it (it saved the frame before the change).
 printf 'technique hiz\nframes 2\nscreenshot %s\nset hiz.max_iterations=1\nscreenshot %s\n' "$PWD/set1.png" "$PWD/set2.png" > set.txt
 view --scene cornell --size 160x90 --script set.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
