@@ -14,7 +14,7 @@ set reference.samples=4
 compare diff
 frames 2
 SCRIPT
-xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
   --script run.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
 "$ssrlab" compare --scene gallery --size 320x180 --techniques hiz --set reference.samples=4 --frames 1 \
   --out grid.png --json results.json > compare.txt 2>&1 || { cat compare.txt; exit 1; }
@@ -46,7 +46,7 @@ set reference.samples=4
 frames 2
 status
 SCRIPT
-xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene cornell --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene cornell --size 320x180 \
   --script settle.txt > settle.txt.log 2>&1 || { cat settle.txt.log; exit 1; }
 python3 - <<'PY'
 import json
@@ -61,7 +61,7 @@ echo "viewer settling figure ok"
 # The same technique on both sides at two settings: set-b reaches B alone (set reached both, so
 # the figure was "identical"), and the labels say what differs.
 printf 'technique hiz\ntechnique-b hiz\nset-b hiz.max_iterations=8\ncompare split\nframes 2\nstatus\n' > same.txt
-xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
   --script same.txt > same.log 2>&1 || { cat same.log; exit 1; }
 python3 - <<'PY'
 import json

@@ -26,7 +26,7 @@ pixels="160 150
   echo "inspect 320 10"
 } > run.txt
 set +e
-xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
   --script run.txt > log.txt 2>&1
 rc=$?
 set -e
@@ -78,7 +78,7 @@ echo "viewer inspect ok"
 # A technique without a debug image of its own (stochastic: stage and telemetry views only)
 # reports no steps: it reported hiz's, read from the image hiz had left there.
 printf 'technique hiz\nframes 2\ninspect 160 150\ntechnique stochastic\nframes 2\ninspect 160 150\n' > stale.txt
-xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
   --script stale.txt > stale.log 2>&1 || { cat stale.log; exit 1; }
 python3 - <<'PY'
 import json, re

@@ -59,7 +59,7 @@ status
 preset-load /nonexistent/preset.json
 SCRIPT
 set +e
-xvfb-run -a -s "-screen 0 1024x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 1024x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene gallery --size 320x180 \
   --script run.txt > log.txt 2>&1
 rc=$?
 set -e

@@ -48,7 +48,7 @@ for scene in $scenes; do
   d="$outdir/$scene"
   rm -rf "$d"; mkdir -p "$d"
   # -a picks a free display number, so parallel ctest runs do not collide.
-  (cd "$d" && xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --scene "$scene" --size 320x180 \
+  (cd "$d" && xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --scene "$scene" --size 320x180 \
      --ini "$d/imgui.ini" --script "$outdir/walk.txt" > log.txt 2>&1) ||
     { echo "viewer failed on $scene:"; cat "$d/log.txt"; exit 1; }
 done

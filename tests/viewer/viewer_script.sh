@@ -7,7 +7,7 @@ viewer=$1; outdir=$2
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$outdir"; mkdir -p "$outdir"; cd "$outdir"
 command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (apt-get install xvfb)"; exit 1; }
-view() { xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" "$@"; }
+view() { xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" "$@"; }
 
 cat > run.txt <<'SCRIPT'
 technique hiz

@@ -9,7 +9,7 @@ command -v xvfb-run >/dev/null || { echo "xvfb-run is missing (apt-get install x
 shoot() {  # shoot NAME ARGS...: one screenshot of 3 frames
   local shot="$outdir/$1.png"; shift
   rm -f "$shot"
-  xvfb-run -a -s "-screen 0 800x600x24" "$viewer" --scene gallery --size 320x180 --frames 3 \
+  xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --scene gallery --size 320x180 --frames 3 \
     --screenshot "$shot" "$@"
   [ -s "$shot" ] || { echo "no screenshot $shot"; exit 1; }
 }
