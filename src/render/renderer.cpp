@@ -465,7 +465,12 @@ Renderer::TechniqueState& Renderer::technique_state(Technique& t, const Techniqu
   if (reset) {
     for (std::size_t i = 0; i < s.textures.size(); ++i)
       if (s.decls[i].persistent) clear_texture(s.textures[i]);
-    s.prev_color_valid = s.next_color_kept = false;  // the shaders do not read it then
+    // Not read until a frame keeps one again; zeroed, so no history texture holds a stale value.
+    s.prev_color_valid = s.next_color_kept = false;
+    if (s.prev_color) {
+      clear_texture(s.prev_color);
+      clear_texture(s.next_color);
+    }
     t.reset();
   }
   s.serial = serial_;
@@ -503,8 +508,8 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
   };
   rebind();
   FrameContext ctx{width_, height_, posed_scene(), geometry_id_, camera_, matrices_, frame_settings_,
-                   time_, serial_, history_valid_, state.prev_color_valid, scene_diagonal_, frame_ubo_.id(), gbuffer_, lit_, motion_,
-                   hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
+                   time_, serial_, history_valid_, state.prev_color_valid, scene_diagonal_, frame_ubo_.id(),
+                   gbuffer_, lit_, motion_, hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
                    &refraction_, debug ? &debug_ : nullptr, timer, rebind};
   for (gl::Texture2D& tex : state.textures) ctx.textures.push_back(&tex);
   t.run(ctx);
