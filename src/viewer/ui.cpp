@@ -591,7 +591,8 @@ void Viewer::technique_panel(int i) {
     }
     ImGui::EndCombo();
   }
-  if (ImGui::BeginCombo("named preset", "set up from a preset ...")) {
+  // A short preview: the panel's default width cut "set up from a preset ..." to "set up from a pre".
+  if (ImGui::BeginCombo("named preset", "apply one ...")) {
     for (const Preset& p : presets()) {
       if (ImGui::Selectable(p.name.c_str())) {
         if (i == 0) ui_command(Verb::Preset, p.name);
@@ -607,6 +608,7 @@ void Viewer::technique_panel(int i) {
     }
     ImGui::EndCombo();
   }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("set this side up from a named preset (ssrlab techniques lists them)");
   if (on_demand(i)) {
     ImGui::BeginDisabled(side.request > 0 || side_current(i));
     if (ImGui::Button("compute now")) ui_command(Verb::Truth, "now");
