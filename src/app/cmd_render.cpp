@@ -137,6 +137,11 @@ int run_render(const RenderOptions& o) {
                }), sets.end());
   auto technique = create_technique(technique_name);
   apply_assignments(*technique, sets);
+  // Views of change between frames: render draws one frame, with no frame before it, so they
+  // would be black (motion) or one frame's worth (history) and look like results.
+  if (view == ViewMode::Motion || view == ViewMode::History)
+    throw InputError("--view " + o.view + " shows change over frames and render draws one; use ssrlab sequence "
+                     "--out or ssrlab-view.");
   if (view_info(view).debug) {
     // A debug view the technique does not fill would be a black image that looks like a result.
     const TechniqueDecl decl = technique->declare();
@@ -180,7 +185,12 @@ int run_render(const RenderOptions& o) {
                   o.out.c_str(), w, h, scene.name.c_str(), technique_name.c_str(), all->hits.correct,
                   all->hits.false_hits, all->hits.missed, all->hits.correct_miss);
     }
-    return s.error.nonfinite ? 1 : 0;
+    if (s.error.nonfinite) {
+      std::fprintf(stderr, "ssrlab: %zu non-finite pixels in %s's final image.\n", s.error.nonfinite,
+                   technique_name.c_str());
+      return 1;
+    }
+    return 0;
   }
 
   gl::PassTimer timer(ctx->info().software ? gl::PassTimer::Clock::Cpu : gl::PassTimer::Clock::Gpu);

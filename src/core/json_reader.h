@@ -124,6 +124,11 @@ class JsonReader {
     if (s.empty()) fail_at(where, "must not be empty");
     return s;
   }
+  // Free text ("description"): any string, empty included.
+  std::string text(const nlohmann::json& j, const std::string& where) const {
+    if (!j.is_string()) fail_at(where, "must be a string");
+    return j.get<std::string>();
+  }
   std::string one_of(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& names) const {
     const std::string s = string(j, where);
     if (std::find(names.begin(), names.end(), s) == names.end()) {

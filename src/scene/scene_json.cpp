@@ -306,7 +306,7 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s, MaterialNames
       const std::string w = where + ".reflector";
       const json& rj = p["reflector"];
       if (rj.is_boolean()) {
-        if (type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
+        if (rj.get<bool>() && type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
         if (rj.get<bool>()) {
           Reflector refl;
           const glm::vec3 tx(transform * glm::vec4(1, 0, 0, 0)),
@@ -429,7 +429,7 @@ CameraPath read_path(const JsonReader& r, const json& j, const std::string& wher
                                      q(path.name));
   for (const CameraPath& other : s.animation.paths)
     if (other.name == path.name) r.fail_at(where + ".name", "repeats the path name " + q(path.name));
-  path.description = r.string(p, where, "description", "");
+  if (p.contains("description")) path.description = r.text(p["description"], where + ".description");  // free text
   const json& keys = key_array(r, p, where, "keys");
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::string w = JsonReader::index(where + ".keys", i);
@@ -572,7 +572,7 @@ Scene load_scene_json(const fs::path& path) {
   Scene s;
   LoadContext ctx;
   s.name = r.string(j, "", "name", path.stem().string());
-  if (j.contains("description")) r.string(j["description"], "description");
+  if (j.contains("description")) r.text(j["description"], "description");  // free text: empty too
   s.ambient = r.number(j, "", "ambient", s.ambient, 0.0f, 1e6f);
   if (j.contains("environment")) read_environment(r, j["environment"], s.environment);
   if (j.contains("materials")) read_materials(r, j["materials"], s, ctx, dir);

@@ -318,6 +318,16 @@ bad "0.00099999999999" render --technique hiz --set hiz.thickness=0.000999999999
 # A NUL inside a JSON string would cut a file name short.
 json nul '{"meshes": [{"obj": "good.obj\u0000.png"}]}'
 render_bad "NUL character" "$in/nul.json"
+# Valid input a review found refused: an empty description is free text; "reflector": false asks
+# nothing of a box. Both render (exit 0).
+json empty_description '{"description": "", "primitives": [{"type": "box", "reflector": false}]}'
+if "$SSRLAB" render --scene "$in/empty_description.json" --technique none --size 32x18 --out "$tmp/ok.png" >/dev/null 2>"$tmp/stderr"; then
+  passes=$((passes + 1)); rm -f "$tmp/ok.png"
+else fail "a valid scene was refused: $(grep -v 'GL via' "$tmp/stderr")"; fi
+n=$((n + 1))
+# render draws one frame: views of change over frames would be black and read as a result.
+bad "shows change over frames" render --view motion $S --out "$out/x.png"
+bad "shows change over frames" render --technique stochastic --view history $S --out "$out/x.png"
 
 # compare and bench refuse bad scenes the same way, before writing anything.
 bad 4000000000 compare --scene "$in/huge_index.obj" $S --out "$out/x.png" --json "$out/r.json"
