@@ -67,11 +67,16 @@ void require_output_files(const std::vector<std::pair<std::string, std::string>>
   std::vector<std::pair<std::string, fs::path>> seen;
   for (const auto& [option, file] : option_and_path) {
     if (file.empty()) continue;
-    const fs::path path = fs::absolute(file).lexically_normal();
     std::error_code ec;
-    if (!fs::is_directory(path.parent_path(), ec))
-      throw InputError("output directory '" + path.parent_path().string() + "' of " + option +
-                       " does not exist.");
+    // The directory as the system resolves it ("nodir/../x.png" needs nodir), then the file a
+    // write replaces (a symbolic link's target): what the checks below look at is what is written.
+    const fs::path given_dir = fs::path(file).parent_path().empty() ? fs::path(".") : fs::path(file).parent_path();
+    if (!fs::is_directory(given_dir, ec))
+      throw InputError("output directory '" + given_dir.string() + "' of " + option + " does not exist.");
+    const fs::path target = fs::absolute(files::write_target(file));
+    const fs::path path = fs::weakly_canonical(target.parent_path(), ec) / target.filename();
+    if (ec || !fs::is_directory(path.parent_path(), ec))
+      throw InputError(option + " '" + file + "' is a link to a file in a directory that does not exist.");
     if (fs::is_directory(path, ec))
       throw InputError(option + " '" + file + "' is a directory, not a file.");
     const long name_max = ::pathconf(path.parent_path().c_str(), _PC_NAME_MAX);

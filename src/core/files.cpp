@@ -32,6 +32,18 @@ fs::path temp_path_beside(const fs::path& target) {
                                  std::to_string(counter++) + ".tmp");
 }
 
+fs::path write_target(const fs::path& file) {
+  fs::path p = file;
+  for (int hops = 0; hops < 40; ++hops) {  // 40: Linux's own limit on links in a path
+    std::error_code ec;
+    if (!fs::is_symlink(p, ec)) return p;
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) return p;
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  return p;
+}
+
 std::string lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext)

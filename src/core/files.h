@@ -21,6 +21,11 @@ inline std::string q(const std::filesystem::path& p) { return q(std::string_view
 // file system's limit still gets a temporary.
 std::filesystem::path temp_path_beside(const std::filesystem::path& target);
 
+// The file that writing `file` replaces: `file`, or where a symbolic link there points (followed
+// as a shell's `>` follows it), so that a temporary renamed over it replaces the target, not the
+// link.
+std::filesystem::path write_target(const std::filesystem::path& file);
+
 // The path's extension in lower case (".PNG" and ".Png" -> ".png"), for checks of output formats.
 std::string lower_extension(const std::filesystem::path& path);
 

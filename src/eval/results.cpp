@@ -411,7 +411,8 @@ std::string breakdown_table(const RunResults& run, const std::vector<std::string
   return out;
 }
 
-void write_text_file_atomic(const std::filesystem::path& path, const std::string& text) {
+void write_text_file_atomic(const std::filesystem::path& file, const std::string& text) {
+  const std::filesystem::path path = files::write_target(file);
   const std::filesystem::path tmp = files::temp_path_beside(path);
   auto fail = [&](const std::string& why) {
     std::error_code ignored;

@@ -32,7 +32,8 @@ void commit(const fs::path& tmp, const fs::path& path) {
 }
 }  // namespace
 
-void write_file_atomic(const fs::path& path, const void* bytes, std::size_t size) {
+void write_file_atomic(const fs::path& file, const void* bytes, std::size_t size) {
+  const fs::path path = files::write_target(file);
   const fs::path tmp = files::temp_path_beside(path);
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw RuntimeError("cannot write '" + path.string() + "' (directory missing or not writable).");
@@ -58,7 +59,8 @@ void write_png(const fs::path& path, const RgbaImage8& image) {
   write_file_atomic(path, encoded.data(), encoded.size());
 }
 
-void write_exr(const fs::path& path, const RgbaImageF& image) {
+void write_exr(const fs::path& file, const RgbaImageF& image) {
+  const fs::path path = files::write_target(file);
   const fs::path tmp = files::temp_path_beside(path);
   const char* err = nullptr;
   const int rc = SaveEXR(image.pixels.data(), image.width, image.height, 4, /*fp16=*/1,

@@ -325,6 +325,16 @@ if "$SSRLAB" render --scene "$in/empty_description.json" --technique none --size
   passes=$((passes + 1)); rm -f "$tmp/ok.png"
 else fail "a valid scene was refused: $(grep -v 'GL via' "$tmp/stderr")"; fi
 n=$((n + 1))
+# Outputs are checked where they are written: "nodir/.." needs nodir (it rendered, then exit 1),
+# a link to a missing directory is refused, and a link is written through, not replaced.
+bad "does not exist" render $S --out "$out/nodir/../x.png"
+ln -s /nonexistent/x.png "$tmp/dangling.png"
+bad "a link to a file in a directory that does not exist" render $S --out "$tmp/dangling.png"
+echo old > "$tmp/real.png"; ln -s real.png "$tmp/link.png"
+n=$((n + 1))
+if "$SSRLAB" render $S --out "$tmp/link.png" >/dev/null 2>&1 && [ -L "$tmp/link.png" ] && [ "$(head -c 4 "$tmp/real.png" | tail -c 3)" = PNG ]; then
+  passes=$((passes + 1))
+else fail "render --out LINK replaced the link or left its target"; fi
 # render draws one frame: views of change over frames would be black and read as a result.
 bad "shows change over frames" render --view motion $S --out "$out/x.png"
 bad "shows change over frames" render --technique stochastic --view history $S --out "$out/x.png"
