@@ -118,16 +118,15 @@ class JsonReader {
     }
     return v;
   }
-  std::string string(const nlohmann::json& j, const std::string& where) const {
-    if (!j.is_string()) fail_at(where, "must be a string");
-    std::string s = j.get<std::string>();
-    if (s.empty()) fail_at(where, "must not be empty");
-    return s;
-  }
   // Free text ("description"): any string, empty included.
   std::string text(const nlohmann::json& j, const std::string& where) const {
     if (!j.is_string()) fail_at(where, "must be a string");
     return j.get<std::string>();
+  }
+  std::string string(const nlohmann::json& j, const std::string& where) const {
+    std::string s = text(j, where);
+    if (s.empty()) fail_at(where, "must not be empty");
+    return s;
   }
   std::string one_of(const nlohmann::json& j, const std::string& where, const std::vector<std::string>& names) const {
     const std::string s = string(j, where);

@@ -306,8 +306,8 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s, MaterialNames
       const std::string w = where + ".reflector";
       const json& rj = p["reflector"];
       if (rj.is_boolean()) {
-        if (rj.get<bool>() && type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
-        if (rj.get<bool>()) {
+        if (rj.get<bool>()) {  // false asks nothing of any primitive
+          if (type != "plane") r.fail_at(w, "can be true only for a plane; give a rectangle object");
           Reflector refl;
           const glm::vec3 tx(transform * glm::vec4(1, 0, 0, 0)),
               tz(transform * glm::vec4(0, 0, 1, 0));

@@ -206,6 +206,12 @@ void Viewer::render(bool advance) {
   const bool rested = glfwGetTime() - last_moved_ >= kRestSeconds && !playing_;
   const int n_sides = active_sides();
   renderer_->debug_outputs = section_open_[SectionInspector] || inspected_;
+  // The display pass wrote with imageStore: the side keeps its image.
+  const auto keep_display = [&](Side& s) {
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                       w, h, 1);
+  };
   for (int i = 0; i < n_sides; ++i) {
     Side& s = sides_[i];
     if (!side_fills_view(i, view_)) {
@@ -222,9 +228,7 @@ void Viewer::render(bool advance) {
       // Only the exposure or the view moved: the reference's image is displayed again from its
       // colour, not traced again (1.5 s at 640x360 on llvmpipe, and a STALE banner meanwhile).
       renderer_->display_color(s.color);
-      glMemoryBarrier(GL_ALL_BARRIER_BITS);
-      glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                         w, h, 1);
+      keep_display(s);
       s.shown_key = key;
       continue;
     }
@@ -251,9 +255,7 @@ void Viewer::render(bool advance) {
     // The inputs render once a frame: the second side's render() finds them current.
     renderer_->render(current_frame(), *s.technique, static_cast<ViewMode>(view_), s.timer.get());
     s.timer->end_frame();
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // the display pass wrote with imageStore
-    glCopyImageSubData(renderer_->display().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.copy.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
-                       w, h, 1);
+    keep_display(s);
     glCopyImageSubData(renderer_->color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, s.color.id(), GL_TEXTURE_2D, 0, 0, 0, 0,
                        w, h, 1);
     s.has_debug = renderer_->debug_written();

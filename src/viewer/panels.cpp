@@ -39,6 +39,7 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
     // geometric mean.
     const bool resolved = ran && d.has_auto() && !ran->is_auto(i);
     const double resolved_value = resolved ? std::clamp(ran->get(i), d.min, d.max) : before;
+    const bool show_resolved = params.is_auto(i) && resolved;  // the slider shows "auto: <value>"
     if (d.has_auto()) {
       bool automatic = params.is_auto(i);
       const double middle = std::sqrt(d.min * d.max);
@@ -56,7 +57,6 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
     if (changed_from_default) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.82f, 0.35f, 1.0f));
     switch (d.type) {
       case ParamType::Float: {
-        const bool show_resolved = params.is_auto(i) && resolved;
         float v = static_cast<float>(show_resolved ? resolved_value : before);
         // Wide ranges are easier to tune on a logarithmic slider.
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
@@ -66,7 +66,6 @@ bool draw_param_panel(ParamSet& params, const ParamSet* ran) {
         break;
       }
       case ParamType::Int: {
-        const bool show_resolved = params.is_auto(i) && resolved;
         int v = static_cast<int>(show_resolved ? resolved_value : before);
         const ImGuiSliderFlags flags = (d.min > 0 && d.max / d.min >= 100) ? ImGuiSliderFlags_Logarithmic : 0;
         if (ImGui::SliderInt(d.name, &v, static_cast<int>(d.min), static_cast<int>(d.max),
@@ -409,18 +408,20 @@ TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu) {
       if (p.name == name) return p.ms;
     return std::nullopt;
   };
-  std::vector<std::string> shared_rows;
+  std::vector<std::pair<std::string, double>> shared;  // each input drawn, with its time
   for (std::size_t k = 0; k < kFrameInputPasses; ++k) {
     const std::string name = kFramePasses[k];
     std::optional<double> drawn;
     for (std::size_t i = 0; i < n && !drawn; ++i) drawn = own_ms(i, name);
     if (!drawn) continue;
-    shared_rows.push_back(name);
+    shared.emplace_back(name, *drawn);
     for (std::size_t i = 0; i < n; ++i)  // a column that did not run (no passes) stays empty
       if (!own_ms(i, name) && !columns[i].passes.empty()) total[i] += *drawn;
   }
-  const auto is_shared = [&](const std::string& name) {
-    return std::find(shared_rows.begin(), shared_rows.end(), name) != shared_rows.end();
+  const auto shared_ms = [&](const std::string& name) -> std::optional<double> {
+    for (const auto& [input, ms] : shared)
+      if (input == name) return ms;
+    return std::nullopt;
   };
   // The cells as text first, so each column is as wide as its widest cell (a fitted column keeps
   // the width of the first frame it saw: "total" alone, before the passes' rows arrived).
@@ -446,18 +447,15 @@ TimingTable timing_table(const std::vector<TimingColumn>& columns, bool gpu) {
     }
   };
   for (const gl::PassTime& r : rows)
-    row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name + (is_shared(r.name) ? " *" : ""),
+    row(std::string(2 * static_cast<std::size_t>(r.depth), ' ') + r.name + (shared_ms(r.name) ? " *" : ""),
         [&](std::size_t i) -> std::optional<double> {
           if (const auto ms = own_ms(i, r.name)) return ms;
-          if (!is_shared(r.name) || columns[i].passes.empty()) return std::nullopt;
-          for (std::size_t j = 0; j < n; ++j)
-            if (const auto ms = own_ms(j, r.name)) return ms;
-          return std::nullopt;
+          return columns[i].passes.empty() ? std::nullopt : shared_ms(r.name);
         });
   row("total", [&](std::size_t i) -> std::optional<double> {
     return columns[i].passes.empty() ? std::nullopt : std::optional(total[i]);  // not run yet: nothing
   });
-  return {cells, !shared_rows.empty()};
+  return {cells, !shared.empty()};
 }
 
 void draw_timing(const std::vector<TimingColumn>& columns, const std::vector<float>& frame_ms, double last_frame_ms,
