@@ -121,6 +121,10 @@ struct Scene {
   std::size_t triangle_count() const;
 };
 
+// The largest radiance, intensity, ambient, size or scale a scene may give, in a file or in
+// the viewer's panels and script: a bound on input, not a physical limit.
+inline constexpr float kSceneValueMax = 1e6f;
+
 // The diagonal of the axis-aligned box around every vertex (0 for an empty scene).
 float bounding_diagonal(const Scene& scene);
 

@@ -89,9 +89,9 @@ json parse_json_file(const fs::path& path) {
 glm::vec3 read_scale(const JsonReader& r, const json& obj, const std::string& where) {
   if (!obj.contains("scale")) return glm::vec3(1.0f);
   const std::string w = JsonReader::join(where, "scale");
-  if (obj["scale"].is_number()) return glm::vec3(r.number(obj["scale"], w, 1e-6f, 1e6f));
+  if (obj["scale"].is_number()) return glm::vec3(r.number(obj["scale"], w, 1e-6f, kSceneValueMax));
   if (!obj["scale"].is_array()) r.fail_at(w, "must be a number or an array of 3 numbers");
-  return r.vec3(obj["scale"], w, 1e-6f, 1e6f);
+  return r.vec3(obj["scale"], w, 1e-6f, kSceneValueMax);
 }
 
 glm::mat4 read_transform(const JsonReader& r, const json& obj, const std::string& where) {
@@ -140,17 +140,17 @@ void read_environment(const JsonReader& r, const json& j, Environment& env,
   if (type == "sky") {
     r.keys(j, where, {"type", "zenith", "horizon", "ground", "intensity"});
     env.type = Environment::Type::Sky;
-    env.zenith = r.vec3(j, where, "zenith", env.zenith, 0.0f, 1e6f);
-    env.horizon = r.vec3(j, where, "horizon", env.horizon, 0.0f, 1e6f);
-    env.ground = r.vec3(j, where, "ground", env.ground, 0.0f, 1e6f);
+    env.zenith = r.vec3(j, where, "zenith", env.zenith, 0.0f, kSceneValueMax);
+    env.horizon = r.vec3(j, where, "horizon", env.horizon, 0.0f, kSceneValueMax);
+    env.ground = r.vec3(j, where, "ground", env.ground, 0.0f, kSceneValueMax);
   } else if (type == "constant") {
     r.keys(j, where, {"type", "color", "intensity"});
     env.type = Environment::Type::Constant;
-    env.constant = r.vec3(j, where, "color", env.constant, 0.0f, 1e6f);
+    env.constant = r.vec3(j, where, "color", env.constant, 0.0f, kSceneValueMax);
   } else {
     r.fail_at(where + ".type", "must be \"sky\" or \"constant\", not " + q(type));
   }
-  env.intensity = r.number(j, where, "intensity", env.intensity, 0.0f, 1e6f);
+  env.intensity = r.number(j, where, "intensity", env.intensity, 0.0f, kSceneValueMax);
 }
 
 void read_materials(const JsonReader& r, const json& j, Scene& s, LoadContext& ctx,
@@ -169,7 +169,7 @@ void read_materials(const JsonReader& r, const json& j, Scene& s, LoadContext& c
     mat.metallic = r.number(m, where, "metallic", mat.metallic, 0.0f, 1.0f);
     mat.roughness = r.number(m, where, "roughness", mat.roughness, 0.0f, 1.0f);
     mat.reflectance = r.number(m, where, "reflectance", mat.reflectance, 0.0f, 1.0f);
-    mat.emission = r.vec3(m, where, "emission", mat.emission, 0.0f, 1e6f);
+    mat.emission = r.vec3(m, where, "emission", mat.emission, 0.0f, kSceneValueMax);
     mat.normal_strength = r.number(m, where, "normal_strength", mat.normal_strength, 0.0f, 4.0f);
     mat.transparent = r.boolean(m, where, "transparent", mat.transparent);
     mat.ior = r.number(m, where, "ior", mat.ior, 1.0f, 3.0f);
@@ -268,20 +268,20 @@ void read_primitives(const JsonReader& r, const json& j, Scene& s, MaterialNames
     if (type == "plane") {
       allowed({"size", "uv_scale"});
       if (!p.contains("size")) r.fail_at(where + ".size", "is required");
-      plane_size = r.vec2(p["size"], where + ".size", 1e-6f, 1e6f);
-      mesh = meshgen::plane(plane_size, r.number(p, where, "uv_scale", 1.0f, 1e-6f, 1e6f));
+      plane_size = r.vec2(p["size"], where + ".size", 1e-6f, kSceneValueMax);
+      mesh = meshgen::plane(plane_size, r.number(p, where, "uv_scale", 1.0f, 1e-6f, kSceneValueMax));
     } else if (type == "box") {
       allowed({"extents"});
-      mesh = meshgen::box(r.vec3(p, where, "extents", glm::vec3(1.0f), 1e-6f, 1e6f));
+      mesh = meshgen::box(r.vec3(p, where, "extents", glm::vec3(1.0f), 1e-6f, kSceneValueMax));
     } else if (type == "sphere") {
       allowed({"radius", "segments", "rings"});
-      mesh = meshgen::sphere(r.number(p, where, "radius", 0.5f, 1e-6f, 1e6f),
+      mesh = meshgen::sphere(r.number(p, where, "radius", 0.5f, 1e-6f, kSceneValueMax),
                              r.integer(p, where, "segments", 48, 3, 1024),
                              r.integer(p, where, "rings", 24, 2, 1024));
     } else if (type == "cylinder") {
       allowed({"radius", "height", "segments"});
-      mesh = meshgen::cylinder(r.number(p, where, "radius", 0.5f, 1e-6f, 1e6f),
-                               r.number(p, where, "height", 1.0f, 1e-6f, 1e6f),
+      mesh = meshgen::cylinder(r.number(p, where, "radius", 0.5f, 1e-6f, kSceneValueMax),
+                               r.number(p, where, "height", 1.0f, 1e-6f, kSceneValueMax),
                                r.integer(p, where, "segments", 32, 3, 1024));
     } else {
       r.fail_at(where + ".type",
@@ -345,7 +345,7 @@ Light read_light(const JsonReader& r, const json& j, const std::string& where) {
   } else {
     r.fail_at(where + ".type", "must be \"point\" or \"directional\", not " + q(type));
   }
-  light.color = r.vec3(l, where, "color", light.color, 0.0f, 1e6f);
+  light.color = r.vec3(l, where, "color", light.color, 0.0f, kSceneValueMax);
   light.intensity = r.number(l, where, "intensity", light.intensity, 0.0f, 1e9f);
   return light;
 }
@@ -573,7 +573,7 @@ Scene load_scene_json(const fs::path& path) {
   LoadContext ctx;
   s.name = r.string(j, "", "name", path.stem().string());
   if (j.contains("description")) r.text(j["description"], "description");  // free text: empty too
-  s.ambient = r.number(j, "", "ambient", s.ambient, 0.0f, 1e6f);
+  s.ambient = r.number(j, "", "ambient", s.ambient, 0.0f, kSceneValueMax);
   if (j.contains("environment")) read_environment(r, j["environment"], s.environment);
   if (j.contains("materials")) read_materials(r, j["materials"], s, ctx, dir);
   MaterialNames names;

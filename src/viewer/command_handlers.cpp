@@ -9,6 +9,7 @@
 
 #include "core/cli_common.h"
 #include "core/errors.h"
+#include "core/json_reader.h"
 #include "registry/presets.h"
 #include "techniques/assignments.h"
 #include "scene/animation.h"
@@ -79,7 +80,8 @@ void Viewer::on_ReflectiveF0(const std::string& a) {
 }
 void Viewer::on_Ambient(const std::string& a) {
   const double v = std::stod(a);  // checked >= 0 and finite
-  if (v > 1e6) throw InputError("ambient '" + a + "' must be in [0, 1e6], as in a scene file.");
+  if (v > kSceneValueMax)
+    throw InputError("ambient '" + a + "' must be in [0, " + JsonReader::fmt(kSceneValueMax) + "], as in a scene file.");
   set_lighting(lights_, environment_, static_cast<float>(v));
 }
 void Viewer::on_Frames(const std::string& a) { frames_left_ = std::stoi(a); }

@@ -132,7 +132,7 @@ bool drag3(const char* label, glm::vec3& x, float lo, float hi) {
 bool color_edit(const char* label, glm::vec3& c) {
   glm::vec3 v = c;
   if (!ImGui::ColorEdit3(label, &v.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) return false;
-  for (int i = 0; i < 3; ++i) c[i] = valid(v[i], c[i], 0.0f, 1e6f);
+  for (int i = 0; i < 3; ++i) c[i] = valid(v[i], c[i], 0.0f, kSceneValueMax);
   return true;
 }
 
@@ -219,9 +219,9 @@ bool draw_environment_panel(Environment& env, float& ambient) {
   } else {
     changed |= color_edit("color", env.constant);
   }
-  changed |= drag("intensity", env.intensity, 0.0f, 1e6f);
+  changed |= drag("intensity", env.intensity, 0.0f, kSceneValueMax);
   tooltip("scales the environment's colours");
-  changed |= drag("ambient", ambient, 0.0f, 1e6f);
+  changed |= drag("ambient", ambient, 0.0f, kSceneValueMax);
   tooltip("scales the environment's diffuse (ambient) light");
   return changed;
 }

@@ -222,7 +222,7 @@ ViewerPreset preset_from_json_text(const std::string& text, const std::string& w
   }
   if (j.contains("environment"))
     p.environment = scene_json::read_environment(j["environment"], where, "environment");
-  if (j.contains("ambient")) p.ambient = r.number(j["ambient"], "ambient", 0.0f, 1e6f);
+  if (j.contains("ambient")) p.ambient = r.number(j["ambient"], "ambient", 0.0f, kSceneValueMax);
   return p;
 }
 

@@ -146,7 +146,7 @@ bad_script bad10.txt 'section inspector\n' 'bad10.txt:1:.*takes two arguments'
 # were written as empty PNGs and reported saved.
 bad_script bad11.txt 'frames 1\ntime 1e39\n' "bad11.txt:2: time '1e39' is past the scene's end"
 bad_script bad12.txt 'frames 1\ntime 100\n' "bad12.txt:2: time '100' is past"
-bad_script bad13.txt 'frames 1\nambient 1e39\n' 'bad13.txt:2:.*must be in \[0, 1e6\]'
+bad_script bad13.txt 'frames 1\nambient 1e39\n' 'bad13.txt:2:.*must be in \[0, 1e+06\]'
 bad_script bad14.txt 'screenshot first.png\n' 'bad14.txt:1:.*before the first frame'
 bad_script bad15.txt 'resize 1x1\ncompare grid\nframes 1\nscreenshot g1.png\n' 'bad15.txt:4:.*1x1 image are empty'
 bad_script bad16.txt 'resize 161x91\ncompare grid\nframes 1\ninspect 160 10\n' 'bad16.txt:4:.*no cell at that pixel'
