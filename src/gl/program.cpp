@@ -88,6 +88,10 @@ void expand_into(const ShaderSource& src, const std::string& path, std::ostrings
 
 }  // namespace
 
+std::string ShaderSource::location(const std::string& path) const {
+  return dir_ ? (*dir_ / path).string() : "shaders/" + path;
+}
+
 std::string ShaderSource::expand(const std::string& path, const std::vector<std::string>& defines,
                                  std::vector<std::string>& files) const {
   std::ostringstream out;
@@ -109,7 +113,7 @@ std::string map_info_log(const std::string& log, const std::vector<std::string>&
   std::string line;
   auto name = [&](const std::string& no) {
     const std::size_t i = std::stoul(no);
-    return i < files.size() ? "shaders/" + files[i] : "source " + no;
+    return i < files.size() ? files[i] : "source " + no;
   };
   while (std::getline(in, line)) {
     std::smatch m;
@@ -140,8 +144,8 @@ ShaderObject compile(const ShaderSource& src, GLenum stage, const std::string& p
     glGetShaderiv(sh.id(), GL_INFO_LOG_LENGTH, &len);
     std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
     glGetShaderInfoLog(sh.id(), len, nullptr, log.data());
-    throw RuntimeError("shader compile failed: " + path + "\n" +
-                       map_info_log(log.c_str(), files));
+    for (std::string& f : files) f = src.location(f);
+    throw RuntimeError("shader compile failed: " + src.location(path) + "\n" + map_info_log(log.c_str(), files));
   }
   return sh;
 }

@@ -26,6 +26,9 @@ class ShaderSource {
   ShaderSource with_defines(std::vector<std::string> defines) const;
   // The text of one file; throws RuntimeError when it does not exist.
   std::string read(const std::string& path) const;
+  // Where a user finds the file `path` names: in the --shaders directory, or the checkout's
+  // shaders/ folder that the embedded copy was made from (compile errors name it).
+  std::string location(const std::string& path) const;
   // The expanded text of `path`, with `defines` ("NAME VALUE" or "NAME") inserted after #version.
   // `files` receives the file name of each GLSL source-string number used in #line.
   std::string expand(const std::string& path, const std::vector<std::string>& defines,
@@ -36,7 +39,8 @@ class ShaderSource {
   std::vector<std::string> defines_;  // added to every expand()
 };
 
-// Rewrites "0:12(5): error ..." / "0(12) : error ..." info-log lines to "file.glsl:12: error ...".
+// Rewrites "0:12(5): error ..." / "0(12) : error ..." info-log lines to "file.glsl:12: error ...",
+// the file named by files[source-string number].
 std::string map_info_log(const std::string& log, const std::vector<std::string>& files);
 
 // A linked program. Compile/link failures throw RuntimeError with the mapped info log.

@@ -86,6 +86,11 @@ expect_exit 2 render --technique dda --preset thesis-hq $S --out "$tmp/out.png"
 expect_exit 2 render --shaders "$TESTDATA/json/minimal.json" $S --out "$tmp/out.png"
 mkdir -p "$tmp/empty_shaders"
 expect_exit 2 render --shaders "$tmp/empty_shaders" $S --out "$tmp/out.png"
+# A shader that does not compile is named where it is: in the directory given (it said shaders/...).
+cp -r "$(dirname "$0")/../../shaders" "$tmp/broken_shaders"
+echo 'syntax error here' >>"$tmp/broken_shaders/techniques/linear.comp"
+expect_exit 1 render --shaders "$tmp/broken_shaders" --technique linear $S --out "$tmp/out.png"
+grep -q "^$tmp/broken_shaders/techniques/linear.comp:[0-9]*:" "$tmp/stderr" || bad "a compile error does not name the --shaders file"
 expect_exit 2 compare --techniques "" $S --out "$tmp/out.png"
 expect_exit 2 bench --techniques linear --sizes 32x18 --sweep linear.max_steps=8,16 --frames 1 --warmup 0 \
   --json "$tmp/out.b-sweep-gallery-32x18.svg" --plot "$tmp/out.b.svg"

@@ -11,7 +11,7 @@
 using namespace ssr;
 
 TEST(ShaderSource, MapsMesaAndNvidiaLogs) {
-  const std::vector<std::string> files = {"techniques/linear.comp", "common/frame.glsl"};
+  const std::vector<std::string> files = {"shaders/techniques/linear.comp", "shaders/common/frame.glsl"};
   EXPECT_EQ(gl::map_info_log("1:12(5): error: `x' undeclared\n", files),
             "shaders/common/frame.glsl:12:5: error: `x' undeclared\n");
   EXPECT_EQ(gl::map_info_log("0(7) : error C1008: undefined variable \"y\"\n", files),
@@ -48,5 +48,8 @@ TEST(ShaderSource, DirectoryIncludesStayInside) {
   test::expect_message(test::input_error([&] { src.expand("render/abs.comp", {}, files); }), {"outside the --shaders directory"});
   test::expect_message(test::input_error([&] { src.expand("render/dir.comp", {}, files); }), {"not a regular file"});
   EXPECT_NE(src.expand("render/ok.comp", {}, files).find("const int k = 1;"), std::string::npos);
+  // A compile error names the file where the user has it (it said shaders/... of any directory).
+  EXPECT_EQ(src.location("render/ok.comp"), (dir / "render/ok.comp").string());
+  EXPECT_EQ(gl::ShaderSource().location("render/ok.comp"), "shaders/render/ok.comp");
   fs::remove_all(dir);
 }
