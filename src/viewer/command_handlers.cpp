@@ -192,7 +192,7 @@ void Viewer::on_Inspect(const std::string& a) {
 void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : std::stoi(a); }
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
-// "frame_ms", "image": [w, h], "truth": "none" | "current" | "stale" | "not computed" | "computing", "psnr",
+// "frame_ms" (the last timed frame; null before one), "image": [w, h], "truth": "none" | "current" | "stale" | "not computed" | "computing", "psnr",
 // "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
 // "frame" (the index of the frame shown: history counts it), "history" (true: carried over from
 // the frame before; false: restarted by a cut, a jump or a change), "time" (scene seconds)}.
@@ -202,7 +202,8 @@ void Viewer::on_Status(const std::string&) {
   j["error"] = status_error_;
   j["device"] = window_->info().renderer;
   j["clock"] = clock_ == gl::PassTimer::Clock::Gpu ? "gpu" : "cpu";
-  j["frame_ms"] = shown_frame_ms(0.0);
+  const std::optional<double> ms = shown_frame_ms(0.0);
+  j["frame_ms"] = ms ? nlohmann::json(*ms) : nlohmann::json();  // null before a frame was timed
   j["image"] = {image_w_, image_h_};
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);

@@ -356,8 +356,9 @@ StatusActions draw_status_line(const StatusLine& line, bool panel_shown) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("keys and mouse (F1)");
   char right[256];
   const std::string truth = line.truth.empty() ? "" : "truth: " + line.truth + "  |  ";
-  std::snprintf(right, sizeof right, "%sframe %.1f ms (wall clock)  |  %s", truth.c_str(), line.frame_ms,
-                line.device.c_str());
+  char ms[32] = "-";
+  if (line.frame_ms) std::snprintf(ms, sizeof ms, "%.1f", *line.frame_ms);
+  std::snprintf(right, sizeof right, "%sframe %s ms (wall clock)  |  %s", truth.c_str(), ms, line.device.c_str());
   const float right_w = ImGui::CalcTextSize(right).x;
   ImGui::SameLine();
   const float msg_w = ImGui::GetContentRegionAvail().x - right_w - 12.0f;

@@ -47,7 +47,8 @@ struct StatusLine {
   std::string message;
   bool error = false;
   std::string truth;     // "" (no on-demand side), "current", "stale", "computing"
-  double frame_ms = 0;   // wall clock from one frame to the next (the timing panel has the passes')
+  std::optional<double> frame_ms;  // the last frame's wall clock, start to start (the timing panel
+                                   // has the passes'); none before a frame has been timed
   std::string device;
 };
 struct StatusActions {

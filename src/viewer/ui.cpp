@@ -657,8 +657,9 @@ void Viewer::time_panel() {
   ImGui::TextDisabled("frame %d, %s", frame_index_, renderer_->history_valid() ? "history carried" : "history restarted");
 }
 
-double Viewer::shown_frame_ms(double dt) const {
-  return dt > 0.0 ? dt * 1000.0 : frame_ms_.empty() ? 0.0 : frame_ms_.back();
+std::optional<double> Viewer::shown_frame_ms(double dt) const {
+  if (dt > 0.0) return dt * 1000.0;
+  return frame_ms_.empty() ? std::nullopt : std::optional<double>(frame_ms_.back());
 }
 
 // Per-pass times of the last frame of each side (ms and % of that side's frame), the
@@ -670,7 +671,7 @@ void Viewer::timing_panel(double dt) {
     columns.push_back({i == 0 ? "A" : i == 1 ? "B" : "truth", s.technique->name(), s.last_times,
                        std::vector<float>(s.history.begin(), s.history.end())});
   }
-  draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), shown_frame_ms(dt),
+  draw_timing(columns, std::vector<float>(frame_ms_.begin(), frame_ms_.end()), shown_frame_ms(dt).value_or(0.0),
               clock_ == gl::PassTimer::Clock::Gpu);
   if (renderer_->debug_outputs)
     text_disabled_wrapped("includes the debug image the inspector reads (bench leaves it out: tracers up to a fifth "

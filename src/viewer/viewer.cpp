@@ -364,7 +364,7 @@ int Viewer::run() {
   view_names_ = viewer_view_names();
   scene_names_ = scene_choices();
 
-  double last_time = glfwGetTime();
+  std::optional<double> last_time;  // the previous frame's start: the first frame has none
   std::size_t next_command = 0;
   while (!window_->should_close()) {
     // Scripted runs: commands run between frames, until a `frames N` asks for frames.
@@ -381,7 +381,7 @@ int Viewer::run() {
     }
     window_->poll();
     const double now = glfwGetTime();
-    frame(now - last_time);
+    frame(last_time ? now - *last_time : 0.0);  // dt: the frame before this one, start to start
     last_time = now;
     if (frames_left_ > 0 && --frames_left_ == 0 && compare_ != CompareOff && psnr_valid_)
       std::printf("ssrlab-view: PSNR A vs B %.2f dB\n", psnr_);

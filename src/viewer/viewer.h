@@ -135,8 +135,8 @@ class Viewer {
   void time_panel();
   void timing_panel(double dt);
   // The frame time to show: dt, or for a frame drawn again without time passing (dt 0: a
-  // window-shot) the last timed frame's.
-  double shown_frame_ms(double dt) const;
+  // window-shot, the first frame) the last timed frame's; none before one was timed.
+  std::optional<double> shown_frame_ms(double dt) const;
   void draw_progress(const std::string& what, double fraction);
   void inspector_panel();
   // The collapsing header of a panel section (kPanelSections), opened or closed first when the

@@ -204,6 +204,9 @@ assert s[0] == ['scene', 'view', 'technique-a', 'timing'], s[0]  # kPanelSection
 assert s[1] == ['inspector', 'view', 'technique-a', 'timing'], s[1]
 assert s[2] == ['inspector', 'view', 'technique-a', 'timing'], 'B was asked closed before it was drawn: ' + str(s[2])
 assert s[3] == [], 'a hidden panel shows no section'
+# The first frame has no frame before it to time (it showed the set-up's 0.1-3.8 ms); the next does.
+ms = [json.loads(l.split('status ', 1)[1])['frame_ms'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
+assert ms[0] is None and ms[1] > 0, ms
 PY
 # A window-shot draws the window again without advancing: the same frame index and scene time
 # while playing, and the same image (it once drew one more frame, a step of time and of history).
