@@ -96,7 +96,16 @@ TEST(Reference, ClassesAndIdealAreConsistent) {
   std::vector<float> conf(frame.classes().size(), 1.0f);
   const ErrorMetrics e = compute_metrics(frame.ideal(), frame.truth(), frame.ideal(), frame.classes(), conf);
   EXPECT_EQ(e.psnr_traceable, kPsnrCap);
-  EXPECT_GT(frame.inherent_psnr().value(), 10.0);
+  // The ideal itself: on traceable pixels it reads the lit image where the true ray lands, so it
+  // is near the truth there (measured 160x90, llvmpipe: RMSE 0.061, inherent PSNR 16.46 dB; an
+  // ideal read 2 px off its hit, (2, 1): 0.161 and 14.15 dB, which 10 dB alone let pass).
+  const double traceable_rmse = rmse_where(frame.ideal(), frame.truth(), frame.classes(), [](PixelClass c) {
+                                  return c == PixelClass::Traceable;
+                                }).value();
+  std::printf("gallery 160x90: inherent PSNR %.2f dB, ideal vs truth on traceable pixels RMSE %.4f\n",
+              frame.inherent_psnr().value(), traceable_rmse);
+  EXPECT_LT(traceable_rmse, 0.08);
+  EXPECT_GT(frame.inherent_psnr().value(), 15.0);
   EXPECT_LT(frame.inherent_psnr().value(), kPsnrCap);
   test::expect_no_gl_errors();
 }

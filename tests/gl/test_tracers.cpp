@@ -66,36 +66,49 @@ TEST(Tracers, ErrorFallsAsStepsGrow) {
   test::expect_no_gl_errors();
 }
 
-// Hard cases, for every tracer: finite output and bounded error (score() also counts
-// non-finite values anywhere in the reflection and final images). grazing: the `low` camera
-// skims the mirror floor; corridor `back` looks back towards the start so many rays head
+// Hard cases, for every tracer: finite output, and error that shows the tracer traced (score()
+// also counts non-finite values anywhere in the reflection and final images). grazing: the `low`
+// camera skims the mirror floor; corridor `back` looks back towards the start so many rays head
 // towards the camera and cross the near plane; corridor `default` sends reflections off the
-// screen edges; glass `close` refracts through the sphere.
+// screen edges; glass `close` refracts through the sphere. The bar is `none` (no reflection) on
+// the same case: a fixed floor (8 dB) passed a linear tracer that never hit anything.
 TEST(Tracers, HardCasesStayFiniteAndBounded) {
   struct Hard {
     const char* scene;
     const char* camera;
-    double min_psnr;  // over all reflective pixels, vs the truth
   };
-  const Hard cases[] = {{"gallery", "low", 8.0}, {"corridor", "back", 8.0}, {"corridor", "default", 8.0},
-                        {"cornell", "default", 8.0}, {"glass", "close", 8.0}};
+  const Hard cases[] = {{"gallery", "low"}, {"corridor", "back"}, {"corridor", "default"}, {"cornell", "default"},
+                        {"glass", "close"}};
   // The shared options too: rough lobes (roughness 1, 4 samples), back-face thickness, fades.
-  const std::vector<std::vector<std::string>> options = {
-      {"roughness=auto"}, {"roughness=1", "samples=4"}, {"backface_thickness=true"},
-      {"edge_fade=true", "falloff_distance=5"}};
-  for (const TracerCase& c : kTracers)
-    for (const Hard& h : cases)
-      for (const auto& opts : options) {
+  // `lead`: the least PSNR over `none` each must keep (all reflective pixels, vs the truth).
+  // Tracing as the scene asks (roughness auto, with or without back faces) led by 2.68 dB at
+  // the least (linear, cornell, back faces; gallery/low 10.97-13.48); forced roughness 1 against
+  // a mirror truth, and a 5 m fade on 20-40 m rays, by 0.21 at the least (gallery/low, fade):
+  // those two ask only that the tracer adds no error (llvmpipe, 128x72, 2026-12-02).
+  struct Option {
+    std::vector<std::string> assignments;
+    double lead;
+  };
+  const std::vector<Option> options = {{{"roughness=auto"}, 1.5},
+                                       {{"roughness=1", "samples=4"}, 0.0},
+                                       {{"backface_thickness=true"}, 1.5},
+                                       {{"edge_fade=true", "falloff_distance=5"}, 0.0}};
+  for (const Hard& h : cases) {
+    const double none = test::score_technique(h.scene, 128, 72, "none", {}, h.camera).error.psnr.value();
+    for (const TracerCase& c : kTracers)
+      for (const Option& o : options) {
         std::vector<std::string> a = c.fixed;
         std::string label;
-        for (const std::string& o : opts) {
-          a.push_back(std::string(c.technique) + "." + o);
-          label += " " + o;
+        for (const std::string& x : o.assignments) {
+          a.push_back(std::string(c.technique) + "." + x);
+          label += " " + x;
         }
         const auto s = test::score_technique(h.scene, 128, 72, c.technique, a, h.camera);
         EXPECT_EQ(s.error.nonfinite, 0u) << c.technique << " " << h.scene << "/" << h.camera << label;
-        EXPECT_GE(s.error.psnr.value(), h.min_psnr) << c.technique << " " << h.scene << "/" << h.camera << label;
+        EXPECT_GE(s.error.psnr.value(), none + o.lead)
+            << c.technique << " " << h.scene << "/" << h.camera << label << " against none's " << none << " dB";
       }
+  }
   // The Roberts blend replaces the composite: still finite, confidence-weighted.
   const auto roberts = test::score_technique("gallery", 128, 72, "linear-binary",
                                              {"linear-binary.blend=roberts", "linear-binary.fresnel=true"});
