@@ -99,9 +99,37 @@ for d in one two; do mkdir -p "$tmp/$d"; cp "$TESTDATA/json/minimal.json" "$tmp/
 expect_exit 2 bench --scenes "$tmp/one/s.json,$tmp/two/s.json" --techniques linear --sizes 32x18,64x36 --frames 1 --warmup 0 \
   --plot "$tmp/out.b.svg"
 grep -q "same plot" "$tmp/stderr" || bad "two scenes of one plot name: not the plots' sentence: $(cat "$tmp/stderr")"
+# Each bad file and words its refusal must hold: a file refused for another reason passed (without
+# the absolute-path check, bad_absolute.json was refused as escaping the directory).
+declare -A why=(
+  [bad_absolute.json]="is absolute" [bad_camera_up.json]="must not be parallel"
+  [bad_duplicate_key.json]="has the key 'name' twice" [bad_escape.json]="escapes the directory"
+  [bad_light_key.json]="unknown key 'lights[0].direction'" [bad_missing_mesh.json]="missing.obj' does not exist"
+  [bad_no_meshes.json]="has no meshes or primitives" [bad_not_object.json]="must hold a JSON object"
+  [bad_number_overflow.json]="number overflow" [bad_obj_inside.json]="broken.obj' line 3"
+  [bad_out_of_range.json]="roughness' must be in [0, 1]" [bad_primitive_type.json]="not 'torus'"
+  [bad_skew_reflector.json]="orthogonal tangent" [bad_syntax.json]="JSON syntax error at line 3"
+  [bad_unclosed.json]="unexpected end of input" [bad_unknown_key.json]="unknown key 'materials.floor.rougness'"
+  [bad_unknown_material.json]="unknown material 'nope'" [bad_unknown_top_key.json]="unknown key 'colour'"
+  [bad_wrong_type.json]="roughness' must be a number" [bad_wrong_vec.json]="must be an array of 3 numbers"
+  [bad_zero_reflector.json]="half_extents' must be positive" [bad_zero_scale.json]="scale' must be in"
+  [bad_absolute_texture.obj]="'/etc/hostname' is absolute" [bad_corrupt_texture.obj]="not a readable image"
+  [bad_escape_texture.obj]="escapes the directory" [bad_exponent_overflow.obj]="'0e2147483648'"
+  [bad_face_two_vertices.obj]="at least 3 vertices" [bad_garbage_index.obj]="vertex index '2x'"
+  [bad_garbage_number.obj]="number 'abc'" [bad_huge_vertex.obj]="number '1e39'"
+  [bad_index_past_end.obj]="vertex index 4 is past the end" [bad_missing_mtl.obj]="nowhere.mtl' does not exist"
+  [bad_missing_texture.obj]="gone.png' does not exist" [bad_mtl_garbage.obj]="'Ns' has a malformed"
+  [bad_mtl_nan.obj]="'Kd' has a malformed or non-finite number 'nan'" [bad_nan_vertex.obj]="vertex has a malformed or non-finite number 'nan'"
+  [bad_negative_index.obj]="relative vertex index -9" [bad_no_faces.obj]="has no faces"
+  [bad_normal_index.obj]="normal index 2 is past the end" [bad_texcoord_index.obj]="texture coordinate index -2"
+  [bad_zero_index.obj]="vertex index 0"
+)
 for f in "$TESTDATA"/json/bad_* "$TESTDATA"/obj/bad_*; do
   [ -e "$f" ] || continue
+  name=$(basename "$f")
+  [ -n "${why[$name]:-}" ] || { bad "$name: no row in this test's table of reasons"; continue; }
   expect_exit 2 render --scene "$f" $S --out "$tmp/out.png"
+  grep -qF -- "${why[$name]}" "$tmp/stderr" || bad "$name: refused, but not for '${why[$name]}': $(cat "$tmp/stderr")"
 done
 
 echo "$passes passed, $fails failed"

@@ -66,8 +66,8 @@ json reflectors17 "{\"primitives\": [${p%,}]}";      render_bad "16 supported" "
 l=""; for i in $(seq 33); do l+="{\"type\": \"point\", \"position\": [$i, 1, 0]},"; done
 scene lights33 "\"lights\": [${l%,}]";               render_bad "33 lights" "$in/lights33.json"
 json segments '{"primitives": [{"type": "sphere", "segments": 100000000, "rings": 3}]}'
-render_bad segments "$in/segments.json"
-json rings '{"primitives": [{"type": "sphere", "rings": 1e12}]}'; render_bad rings "$in/rings.json"
+render_bad "segments' must be in [3, 1024]" "$in/segments.json"
+json rings '{"primitives": [{"type": "sphere", "rings": 100000000}]}'; render_bad "rings' must be in [2, 1024]" "$in/rings.json"
 p=$(printf '{"type": "box"},%.0s' $(seq 70000))
 json boxes "{\"primitives\": [${p%,}]}";             render_bad "65536 supported" "$in/boxes.json"
 # 70000 one-triangle groups: refused from the pre-scan, before tinyobjloader makes 70000 shapes
@@ -135,7 +135,7 @@ obj vt_inf "${tri}vt inf 0\nf 1/1 2/1 3/1\n";              render_bad inf "$in/v
 obj mtl_nan "mtllib nan.mtl\nusemtl m\n${tri}f 1 2 3\n"; mtl nan 'newmtl m\nNs -nan\n'
 render_bad nan "$in/mtl_nan.obj"
 json t_inf '{"meshes": [{"obj": "good.obj", "translate": [1e999, 0, 0]}]}'; render_bad 1e999 "$in/t_inf.json"
-json t_nan '{"meshes": [{"obj": "good.obj", "translate": [NaN, 0, 0]}]}';   render_bad t_nan.json "$in/t_nan.json"
+json t_nan '{"meshes": [{"obj": "good.obj", "translate": [NaN, 0, 0]}]}';   render_bad 'JSON syntax error' "$in/t_nan.json"
 json rot_big '{"meshes": [{"obj": "good.obj", "rotate_deg": [1e30, 0, 0]}]}'; render_bad rotate_deg "$in/rot_big.json"
 json far '{"meshes": [{"obj": "good.obj", "translate": [9.5e6, 0, 0], "scale": 1e6}]}'; render_bad 1e7 "$in/far.json"
 scene l_pos '"lights": [{"type": "point", "position": [0, 1e39, 0]}]';    render_bad "lights[0].position" "$in/l_pos.json"
@@ -145,7 +145,7 @@ scene l_dir '"lights": [{"type": "directional", "direction": [0, 0, 0]}]'; rende
 cam c_pos ', "position": [0, 1e400, 4]';                 render_bad 1e400 "$in/c_pos.json"
 cam c_fov_str ', "fov_y": "NaN"';                       render_bad "cameras[0].fov_y" "$in/c_fov_str.json"
 refl r_center '"center": [0, Infinity, 0], "tangent": [1, 0, 0], "bitangent": [0, 0, 1], "half_extents": [1, 1]'
-render_bad r_center.json "$in/r_center.json"
+render_bad 'JSON syntax error' "$in/r_center.json"
 scene env '"environment": {"type": "constant", "color": [1, 1, 1], "intensity": 1e39}'; render_bad intensity "$in/env.json"
 # Animation: a huge key time, a moving planar reflector (they are fixed rectangles), a path
 # option naming no path.
@@ -174,12 +174,12 @@ obj tex_dir "mtllib tex_dir.mtl\nusemtl m\n${tri}f 1 2 3\n"; mtl tex_dir 'newmtl
 render_bad "not a regular file" "$in/tex_dir.obj"
 ln -s /dev/zero "$in/zero.json";                           render_bad "not a regular file" "$in/zero.json"
 mkfifo "$in/fifo.obj";                                     render_bad "not a regular file" "$in/fifo.obj"
-ln -s nothere.json "$in/dangling.json";                    render_bad dangling.json "$in/dangling.json"
+ln -s nothere.json "$in/dangling.json";                    render_bad "dangling.json' does not exist" "$in/dangling.json"
 printf '\x89PNG\r\n\x1a\n garbage' >"$in/bad.png"
 obj tex_bad "mtllib tex_bad.mtl\nusemtl m\n${tri}f 1 2 3\n"; mtl tex_bad 'newmtl m\nmap_Kd bad.png\n'
 render_bad bad.png "$in/tex_bad.obj"
-: >"$in/empty.json";                                       render_bad empty "$in/empty.json"
-head -c 4096 /dev/urandom >"$in/random.obj";               render_bad random.obj "$in/random.obj"
+: >"$in/empty.json";                                       render_bad "empty.json' is empty" "$in/empty.json"
+head -c 4096 /dev/urandom >"$in/random.obj";               render_bad 'NUL byte' "$in/random.obj"
 cp "$in/good.obj" "$in/locked.obj"; chmod 000 "$in/locked.obj"
 if [ ! -r "$in/locked.obj" ]; then render_bad locked.obj "$in/locked.obj"; fi  # root reads anyway
 bad "--scene needs a value" render --scene "" --size 32x18 --out "$out/x.png"
