@@ -78,6 +78,11 @@ constexpr RenderOnlyViewInfo kRenderOnlyViews[] = {
     {RenderOnlyView::Difference, "difference", "|technique - truth| on reflective pixels, 0.25 = hottest"},
 };
 
+// Views of change between frames: render draws one frame, with no frame before it, so they would
+// be black (motion), one frame's worth (history) or the spatial stage's image again (temporal)
+// and look like results. The viewer shows them as frames go by.
+bool spans_frames(ViewMode v) { return v == ViewMode::Motion || v == ViewMode::History || v == ViewMode::Temporal; }
+
 std::vector<std::string> render_only_view_names() {
   std::vector<std::string> names;
   for (const RenderOnlyViewInfo& v : kRenderOnlyViews) names.push_back(v.name);
@@ -137,11 +142,9 @@ int run_render(const RenderOptions& o) {
                }), sets.end());
   auto technique = create_technique(technique_name);
   apply_assignments(*technique, sets);
-  // Views of change between frames: render draws one frame, with no frame before it, so they
-  // would be black (motion) or one frame's worth (history) and look like results.
-  if (view == ViewMode::Motion || view == ViewMode::History)
-    throw InputError("--view " + o.view + " shows change over frames and render draws one; use ssrlab sequence "
-                     "--out or ssrlab-view.");
+  if (spans_frames(view))
+    throw InputError("--view " + o.view + " shows change over frames and render draws one; ssrlab-view shows it as "
+                     "frames go by.");
   if (view_info(view).debug) {
     // A debug view the technique does not fill would be a black image that looks like a result.
     const TechniqueDecl decl = technique->declare();
@@ -248,7 +251,8 @@ Command add_render_command(CLI::App& app) {
   c->add_option("--camera", o->camera, "Named camera of the scene (default: its first).");
   c->add_option("--out", o->out, "Output image, .png (8-bit sRGB) or .exr (linear half float).")->required();
   std::string views;
-  for (const auto& n : view_mode_names()) views += (views.empty() ? "" : "|") + n;
+  for (const ViewInfo& v : view_table())
+    if (!spans_frames(v.mode)) views += (views.empty() ? "" : "|") + std::string(v.name);
   for (const RenderOnlyViewInfo& v : kRenderOnlyViews) views += "|" + std::string(v.name) + " (" + v.description + ")";
   c->add_option("--view", o->view, "What to write: " + views + ".")->capture_default_str();
   add_frame_options(c, &o->frame);

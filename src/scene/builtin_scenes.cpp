@@ -1457,6 +1457,13 @@ const std::vector<BuiltinSceneInfo>& builtin_scenes() {
       for (const ParamDesc& o : e.options)
         if (std::string_view(o.name) == "path")
           v.back().description += "; camera paths (" + e.info.name + ":path=NAME): " + allowed(o);
+      // The objects that move, from the scene's own motions: a still camera is not a still frame
+      // there (sequence's flicker on cornell's `still` is the spinning box's).
+      const Scene scene = e.make(kDefaultOptions);
+      std::string moving;
+      for (const ObjectMotion& m : scene.animation.objects)
+        for (int mesh : m.meshes) moving += (moving.empty() ? "" : ", ") + scene.meshes[static_cast<std::size_t>(mesh)].name;
+      if (!moving.empty()) v.back().description += "; moving objects: " + moving;
     }
     return v;
   }();

@@ -43,7 +43,7 @@ done
 ls "$tmp"/*.tmp* >/dev/null 2>&1 && bad "temporary files left behind" || ok
 expect_exit 0 render --technique stochastic $S --view spatial --out "$tmp/s.png"
 expect_exit 0 render --preset stochastic-low $S --out "$tmp/s.png"
-expect_exit 0 render --technique hiz --set hiz.denoise=true $S --view temporal --out "$tmp/s.png"
+expect_exit 0 render --technique hiz --set hiz.denoise=true $S --view variance --out "$tmp/s.png"
 # Half resolution on an image 1 pixel high: the half grid rounds up (1 row), documented.
 expect_exit 0 render --technique stochastic --size 3x1 --set stochastic.half_resolution=true --out "$tmp/s.exr"
 

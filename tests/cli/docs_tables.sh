@@ -9,7 +9,10 @@ set -eu
 ssrlab=$1; src=$2
 fail=0
 check() {  # name, generated text, documented text
-  if [ "$2" != "$3" ]; then
+  if [ -z "$2" ]; then  # a failed command and a missing marker would otherwise "match"
+    echo "$1: the generated text is empty"
+    fail=1
+  elif [ "$2" != "$3" ]; then
     echo "$1 differs from the generated text:"
     diff <(echo "$3") <(echo "$2") | head -20 || true
     fail=1

@@ -338,6 +338,7 @@ else fail "render --out LINK replaced the link or left its target"; fi
 # render draws one frame: views of change over frames would be black and read as a result.
 bad "shows change over frames" render --view motion $S --out "$out/x.png"
 bad "shows change over frames" render --technique stochastic --view history $S --out "$out/x.png"
+bad "shows change over frames" render --technique stochastic --view temporal $S --out "$out/x.png"  # = spatial at frame 0
 
 # compare and bench refuse bad scenes the same way, before writing anything.
 bad 4000000000 compare --scene "$in/huge_index.obj" $S --out "$out/x.png" --json "$out/r.json"
