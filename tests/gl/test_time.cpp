@@ -197,9 +197,15 @@ class HistoryProbe final : public TechniqueWithParams<ProbeParams> {
   glm::ivec2 scratch_size{0};
 };
 
+// Infinity where the sizes differ or a difference is not finite (std::max would pass a NaN over).
 double max_abs_diff(const RgbaImageF& a, const RgbaImageF& b) {
+  if (a.pixels.size() != b.pixels.size()) return std::numeric_limits<double>::infinity();
   double m = 0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i) m = std::max(m, static_cast<double>(std::abs(a.pixels[i] - b.pixels[i])));
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const double d = std::abs(static_cast<double>(a.pixels[i]) - b.pixels[i]);
+    if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
+    m = std::max(m, d);
+  }
   return m;
 }
 
