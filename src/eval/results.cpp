@@ -59,6 +59,7 @@ nlohmann::json technique_json(const TechniqueResult& r) {
       {"label", r.label.empty() ? r.technique : r.label},
       {"preset", r.preset},
       {"params", std::move(params)},
+      {"ran_params", params_json(r.ran_params)},
       {"time_ms", {{"median", r.time_ms.median}, {"min", r.time_ms.min}, {"max", r.time_ms.max}}},
       {"passes", std::move(passes)},
       {"floor_ms", r.floor_ms},

@@ -38,6 +38,9 @@ struct TechniqueResult {
   // key -> value as text, in table order. In JSON, values that parse as numbers become numbers,
   // true/false become booleans, anything else stays a string.
   std::vector<std::pair<std::string, std::string>> params;
+  // The values it ran with, "auto" resolved and a cap that another parameter lowers applied
+  // (Technique::ran_params): what ran at this scene and size, where `params` is what was asked.
+  std::vector<std::pair<std::string, std::string>> ran_params;
   TimeStats time_ms;                // the technique's passes only
   std::vector<PassTiming> passes;   // every pass of the frame
   double floor_ms = 0;              // the floor pass (ARCHITECTURE §6)

@@ -187,6 +187,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     s.label = variants[v].label();
     s.preset = variants[v].preset;
     s.params = param_list(*run.technique);
+    s.ran_params = param_list(run.technique->ran_params());
     const auto stats = [](std::vector<float>& v, SequenceSummary::RegionInstability& out) {
       out.pixels = v.size();
       if (v.empty()) return;
@@ -253,6 +254,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                        {"label", s.label},
                        {"preset", s.preset},
                        {"params", std::move(params)},
+                       {"ran_params", params_json(s.ran_params)},
                        {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
                                        {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
                                        {"change_ratio", optional_json(s.change_ratio)}}},

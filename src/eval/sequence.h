@@ -43,6 +43,7 @@ struct SequenceFrame {
 struct SequenceSummary {
   std::string technique, label, preset;
   std::vector<std::pair<std::string, std::string>> params;  // every parameter's value, "auto" included
+  std::vector<std::pair<std::string, std::string>> ran_params;  // as the last frame ran them ("auto" resolved)
   std::optional<double> instability_mean, instability_p95;  // over every pair's pixels
   std::size_t instability_pixels = 0;
   struct RegionInstability {

@@ -6,7 +6,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 "$SSRLAB" compare --scene gallery --size 96x54 --frames 1 --out "$tmp/grid.png" --json "$tmp/compare.json" \
-  --preset thesis-lq --set reference.samples=16 --exposure 0.5
+  --preset thesis-lq --preset stochastic-low --set reference.samples=16 --exposure 0.5
 "$SSRLAB" bench --scenes gallery,cornell --sizes 64x36,96x54 --techniques none,linear \
   --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 --reflective-f0 0.05 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
@@ -80,8 +80,12 @@ def check_run(run, where, with_device=True):
     assert run["frame"] == want, f"{where}: frame settings {run['frame']}"
     assert run["results"], f"{where}: no results"
     for r in run["results"]:
-        need = {"technique", "params", "time_ms", "passes", "floor_ms", "error", "nonfinite"}
+        need = {"technique", "params", "ran_params", "time_ms", "passes", "floor_ms", "error", "nonfinite"}
         assert need <= r.keys(), f"{where}: result lacks {need - r.keys()}"
+        # What ran: every key asked, no "auto" left but roughness's (the G-buffer's, per pixel).
+        assert r["ran_params"].keys() == r["params"].keys(), where
+        left = [k for k, v in r["ran_params"].items() if v == "auto" and not k.endswith(".roughness")]
+        assert not left, f"{where}: {r['technique']} ran with {left} auto"
         assert set(r["time_ms"]) >= {"median", "min", "max"}, where
         assert r["time_ms"]["min"] <= r["time_ms"]["median"] <= r["time_ms"]["max"], where
         err = {"rmse", "psnr", "rmse_traceable", "psnr_traceable", "rmse_missing", "coverage"}
@@ -105,6 +109,10 @@ assert "linear" in names and "none" in names, names
 assert any(r.get("preset") == "thesis-lq" for r in c["results"]), "preset missing"
 thesis = next(r for r in c["results"] if r.get("preset") == "thesis-lq")
 assert thesis["params"]["linear.max_steps"] == 128 and thesis["params"]["linear.depth_interp"] is False
+# A cap that another parameter lowers is recorded as it ran: stochastic-low's glossy rays stop at
+# its 64 iterations, though glossy_iterations asks 128.
+low = next(r for r in c["results"] if r.get("preset") == "stochastic-low")
+assert low["params"]["stochastic.glossy_iterations"] == 128 and low["ran_params"]["stochastic.glossy_iterations"] == 64, low
 
 b = json.load(open(f"{tmp}/bench.json"))
 assert {"device", "revision", "runs"} <= b.keys()

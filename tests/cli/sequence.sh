@@ -32,7 +32,8 @@ for f in a["frames"]:
         assert r["nonfinite"] == 0, (f["index"], r["technique"])
         assert math.isfinite(r["error"]["psnr"]) and "all" in r["regions"]
 for s in a["summary"]:
-    assert {"technique", "label", "instability", "ghosting", "convergence"} <= s.keys()
+    assert {"technique", "label", "instability", "ghosting", "convergence", "ran_params"} <= s.keys()
+    assert s["ran_params"].keys() == s["params"].keys(), s["ran_params"]
     # Every parameter's value, defaults and "auto" included (a result names its parameters).
     assert s["params"] and all(k.startswith(s["technique"] + ".") for k in s["params"]), s["params"]
     assert set(s["instability"]) >= {"mean", "p95", "change_mean", "truth_change_mean", "change_ratio"}
