@@ -14,10 +14,18 @@ namespace ssr {
 
 std::string Variant::label() const {
   if (!preset.empty()) return technique + " [" + preset + "]";
+  // Every parameter the command line gave, --set ones before the swept ones, each key once with
+  // its last value: a row called "hiz" is hiz at its defaults (with --set hiz.denoise=true it
+  // read as the default).
+  std::vector<std::string> keys;
+  for (const std::string& a : assignments) {
+    const std::string key = split_assignment(a).first;
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  }
   std::string out = technique;
-  for (const std::string& key : swept_keys)
+  for (const std::string& key : keys)
     for (auto it = assignments.rbegin(); it != assignments.rend(); ++it)
-      if (it->rfind(key + "=", 0) == 0) {
+      if (split_assignment(*it).first == key) {
         out += " " + it->substr(technique.size() + 1);  // "max_steps=64"
         break;
       }

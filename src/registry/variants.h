@@ -12,7 +12,8 @@ struct Variant {
   std::string preset;                    // "" unless it comes from --preset
   std::vector<std::string> assignments;  // "technique.key=value", applied in order
   std::vector<std::string> swept_keys;   // the keys sweeps varied, in command-line order
-  std::string label() const;  // "linear", "dda stride=2 max_steps=64", "linear [thesis-hq]"
+  // "linear", "hiz denoise=true" (--set), "dda stride=2 max_steps=64" (--sweep), "linear [thesis-hq]"
+  std::string label() const;
 };
 
 // Builds and validates the variants (InputError on any unknown technique, key or value):

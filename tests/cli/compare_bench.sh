@@ -6,7 +6,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 "$SSRLAB" compare --scene gallery --size 96x54 --frames 1 --out "$tmp/grid.png" --json "$tmp/compare.json" \
-  --preset thesis-lq --preset stochastic-low --set reference.samples=16 --exposure 0.5
+  --preset thesis-lq --preset stochastic-low --set reference.samples=16 --set hiz.denoise=true --exposure 0.5
 "$SSRLAB" bench --scenes gallery,cornell --sizes 64x36,96x54 --techniques none,linear \
   --sweep linear.max_steps=8,32 --preset thesis-hq --set reference.samples=16 --frames 2 --warmup 1 --reflective-f0 0.05 \
   --json "$tmp/bench.json" --csv "$tmp/bench.csv" --plot "$tmp/bench.svg"
@@ -112,6 +112,9 @@ assert thesis["params"]["linear.max_steps"] == 128 and thesis["params"]["linear.
 # A cap that another parameter lowers is recorded as it ran: stochastic-low's glossy rays stop at
 # its 64 iterations, though glossy_iterations asks 128.
 low = next(r for r in c["results"] if r.get("preset") == "stochastic-low")
+# A row's label names what the command line set: "hiz" alone read as hiz at its defaults.
+labels = {r["technique"]: r["label"] for r in c["results"] if not r.get("preset")}
+assert labels["hiz"] == "hiz denoise=true" and labels["linear"] == "linear", labels
 assert low["params"]["stochastic.glossy_iterations"] == 128 and low["ran_params"]["stochastic.glossy_iterations"] == 64, low
 
 b = json.load(open(f"{tmp}/bench.json"))
