@@ -85,6 +85,7 @@ int run_compare(const CompareOptions& o) {
   run.reference_params = param_list(*reference);
   run.frame_settings = param_list(frame_settings_params(renderer.settings));
   run.inherent = frame.inherent();
+  run.truth_noise = frame.truth_noise();
   std::vector<GridTile> top = {{"reference (truth)", to_rgba8(frame.truth())}};
   std::vector<GridTile> bottom = {{"classes: traceable/missing/sky", class_map(frame.classes(), w, h)}};
   for (const Variant& v : variants) {

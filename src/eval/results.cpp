@@ -99,6 +99,9 @@ nlohmann::json run_json(const RunResults& run) {
       {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
                     {"missing", optional_json(run.inherent.missing)},
                     {"sky", optional_json(run.inherent.sky)}}},
+      {"truth_noise", run.truth_noise ? nlohmann::json{{"psnr", optional_json(run.truth_noise->psnr)},
+                                                      {"psnr_traceable", optional_json(run.truth_noise->psnr_traceable)}}
+                                      : nlohmann::json()},
   };
   if (run.oracles)
     j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", optional_json(run.oracles->psnr)},
@@ -371,10 +374,17 @@ std::string results_table(const RunResults& run, const std::string& clock) {
   std::string out = run.scene + " " + std::to_string(run.width) + "x" +
                     std::to_string(run.height) + ", inherent PSNR " +
                     db_text(run.inherent_psnr) + " dB (traceable " + db_text(run.inherent.traceable) +
-                    ", missing " + db_text(run.inherent.missing) + ", sky " + db_text(run.inherent.sky) + ")\n";
+                    ", missing " + db_text(run.inherent.missing) + ", sky " + db_text(run.inherent.sky) + ")" +
+                    (run.truth_noise ? "; truth noise floor " + db_text(run.truth_noise->psnr) + " dB (traceable " +
+                                           db_text(run.truth_noise->psnr_traceable) + ")"
+                                     : std::string()) +
+                    "\n";
   out += format_table(header, rows);
   out += "trace dB: vs the screen-space ideal on traceable pixels; correct/ok: traceable pixels hit "
          "with the right colour; n/a: not handled.\n";
+  if (run.truth_noise)
+    out += "truth noise floor: what the noise-free truth would score against this sampled one; a figure near it "
+           "is the truth's noise, not the technique's error (raise reference.samples).\n";
   if (run.oracles && run.oracles->pixels > 0)
     out += "oracles (planar vs reference, mirror reflector pixels): " + db_text(run.oracles->psnr) +
            " dB, " + percent_text(run.oracles->within_1_255) + " within 1/255, " +

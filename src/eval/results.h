@@ -49,6 +49,14 @@ struct TechniqueResult {
   std::optional<IterationStats> telemetry;  // one instrumented frame; none: the technique does not iterate
 };
 
+// The truth's own sampling noise (rough pixels, several bounces): as PSNR, what the noise-free
+// truth would score against the truth a run used; a technique's figure near it is limited by the
+// truth, not by the technique (raise reference.samples). None where the truth samples nothing.
+struct TruthNoise {
+  std::optional<double> psnr;            // over every scored pixel
+  std::optional<double> psnr_traceable;  // over the traceable ones (trace dB's pixels)
+};
+
 struct RunResults {  // one scene at one size
   std::string scene;
   int width = 0, height = 0;
@@ -62,6 +70,7 @@ struct RunResults {  // one scene at one size
   // The frame settings ("frame.exposure", "frame.reflective_f0"): the exposure moves every
   // figure (errors are on display values), reflective_f0 which pixels are scored.
   std::vector<std::pair<std::string, std::string>> frame_settings;
+  std::optional<TruthNoise> truth_noise;
 };
 
 // time_ms.median / floor_ms; 0 when floor_ms is not positive.

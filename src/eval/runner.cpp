@@ -97,21 +97,47 @@ ReferenceImages ScoredFrame::references(int samples) {
   if (samples <= 0) return r;
   auto it = ideal_at_samples_.find(samples);
   if (it == ideal_at_samples_.end()) {
-    // The same reference with `samples` rays a rough pixel and another seed, so that its
-    // samples are independent of the converged ideal's.
-    auto ref = create_technique(truth_name());
-    ParamSet from = reference_.params(), to = ref->params();
-    to.copy_values_from(from);
-    to.set(static_cast<std::size_t>(to.find("samples")), samples);
-    const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
-    to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + 7919) % 1000000));
-    ref->load(renderer_.shaders());
-    renderer_.render(frame_, *ref, ViewMode::Final, nullptr);
-    put_ideal(renderer_, reference_outputs(*ref));
+    // Another seed, so that its samples are independent of the converged ideal's.
+    rerun_reference(samples, 7919);
+    put_ideal(renderer_, reference_outputs(*last_rerun_));
     it = ideal_at_samples_.emplace(samples, display_of(ViewMode::Final)).first;
   }
   r.ideal_at_samples = &it->second;
   return r;
+}
+
+void ScoredFrame::rerun_reference(int samples, long shift) {
+  auto ref = create_technique(truth_name());
+  ParamSet from = reference_.params(), to = ref->params();
+  to.copy_values_from(from);
+  to.set(static_cast<std::size_t>(to.find("samples")), samples);
+  const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
+  to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + shift) % 1000000));
+  ref->load(renderer_.shaders());
+  renderer_.render(frame_, *ref, ViewMode::Final, nullptr);
+  last_rerun_ = std::move(ref);
+}
+
+std::optional<TruthNoise> ScoredFrame::truth_noise() {
+  if (truth_noise_) return *truth_noise_;
+  const ParamSet p = reference_.params();
+  const auto value = [&](const char* key) { return p.get(static_cast<std::size_t>(p.find(key))); };
+  bool sampled = value("bounces") > 1;
+  for (std::size_t i = 0; i < labels_.classes.size() && !sampled; ++i)
+    sampled = labels_.classes[i] != PixelClass::NotReflective && !labels_.glass[i] &&
+              labels_.roughness[i] >= value("mirror_roughness");
+  if (!sampled) return *(truth_noise_ = std::optional<TruthNoise>());
+  // A seed apart from the noise floor's run (7919), so the two truths are independent.
+  rerun_reference(static_cast<int>(value("samples")), 2 * 7919);
+  const RgbaImageF other = display_of(ViewMode::Final);
+  const auto noise = [&](auto keep) -> std::optional<double> {
+    const std::optional<double> rmse = rmse_where(truth_, other, labels_.classes, keep);
+    return rmse ? psnr_from_rmse(std::optional<double>(*rmse / std::sqrt(2.0))) : std::nullopt;
+  };
+  TruthNoise n;
+  n.psnr = noise([](PixelClass c) { return c != PixelClass::NotReflective; });
+  n.psnr_traceable = noise([](PixelClass c) { return c == PixelClass::Traceable; });
+  return *(truth_noise_ = std::optional<TruthNoise>(n));
 }
 
 int technique_samples(Technique& t) {

@@ -49,6 +49,10 @@ class ScoredFrame {
   std::optional<double> inherent_psnr() const { return inherent_psnr_; }
   InherentFigures inherent() const;
   std::size_t reference_rays() const { return rays_; }
+  // The truth's sampling noise (results.h TruthNoise): a second reference run with another seed;
+  // half the mean squared difference of the two truths is the noise variance one carries. Run on
+  // the first call; none when the truth samples nothing (every scored pixel a mirror, one bounce).
+  std::optional<TruthNoise> truth_noise();
   // The references as the breakdown takes them; `samples` > 0 adds the noise floor of a
   // technique tracing that many rays per rough pixel (one more reference run per new count).
   ReferenceImages references(int samples);
@@ -57,6 +61,10 @@ class ScoredFrame {
 
  private:
   RgbaImageF display_of(ViewMode view);
+  // Renders the reference again with `samples` rays a rough pixel and its seed moved by `shift`
+  // (independent samples): its truth in the renderer's targets, the run in last_rerun_.
+  void rerun_reference(int samples, long shift);
+  std::unique_ptr<Technique> last_rerun_;
   Renderer& renderer_;
   Technique& reference_;
   FrameRequest frame_;
@@ -66,6 +74,7 @@ class ScoredFrame {
   std::map<int, RgbaImageF> ideal_at_samples_;  // composited ideal at N samples a rough pixel
   std::optional<double> inherent_psnr_;
   std::size_t rays_ = 0;
+  std::optional<std::optional<TruthNoise>> truth_noise_;  // computed once
 };
 
 // The rays per rough pixel of a technique (its `samples` parameter), 0 when it has none.
