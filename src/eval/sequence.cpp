@@ -46,11 +46,19 @@ TemporalFrame read_temporal(const Renderer& r) {
   return f;
 }
 
-// Squared error sums of display values (RGB) for the two ghosting groups.
+// Squared error sums of display values (RGB) for the ghosting groups; `moving` is the part of
+// `elsewhere` whose true reflection changed since the truth frame before (kMovingReflection).
 struct GhostSums {
-  double recent = 0, elsewhere = 0;
-  std::size_t recent_px = 0, elsewhere_px = 0;
+  double recent = 0, elsewhere = 0, moving = 0;
+  std::size_t recent_px = 0, elsewhere_px = 0, moving_px = 0;
 };
+
+// A settled pixel whose true reflected radiance changed by more than this (display value, in
+// some channel) since the truth frame before, at its reprojected position: a reflection moving
+// over a surface that stays, where a history that lags leaves a trail (gallery's slide: the
+// green sphere's reflection on the mirror floor). Also where the truth's own noise moves it
+// (README: ghosting).
+constexpr float kMovingReflection = 0.1f;
 
 std::optional<double> psnr_of(double sum, std::size_t px) {
   if (px == 0) return std::nullopt;
@@ -138,6 +146,17 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           } else {
             run.ghost.elsewhere += e;
             ++run.ghost.elsewhere_px;
+            if (pair && previous[p] >= 0) {
+              const std::size_t q = static_cast<std::size_t>(previous[p]);
+              float change = 0;
+              for (std::size_t c = 0; c < 3; ++c)
+                change = std::max(change, std::abs(scored->truth_reflected().pixels[p * 4 + c] -
+                                                   truth_reflected_before.pixels[q * 4 + c]));
+              if (change > kMovingReflection) {
+                run.ghost.moving += e;
+                ++run.ghost.moving_px;
+              }
+            }
           }
         }
         if (pair) {
@@ -217,6 +236,8 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
     s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
     s.disoccluded_pixels = run.ghost.recent_px;
+    s.moving_psnr = psnr_of(run.ghost.moving, run.ghost.moving_px);
+    s.moving_pixels = run.ghost.moving_px;
     for (const SequenceFrame& f : out.frames) {
       const SequenceTechniqueFrame& r = f.results[v];
       s.nonfinite += r.nonfinite;
@@ -258,7 +279,8 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                        {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
                                        {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
                                        {"change_ratio", optional_json(s.change_ratio)}}},
-                       {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels}}},
+                       {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels},
+                                     {"moving_psnr", optional_json(s.moving_psnr)}, {"moving_pixels", s.moving_pixels}}},
                        {"convergence", convergence},
                        {"convergence_frames", s.convergence_frames},
                        {"nonfinite", s.nonfinite}});
@@ -292,9 +314,11 @@ std::string sequence_table(const SequenceResults& r) {
       if (p && std::isfinite(*p)) sum += *p, ++n;
     rows.push_back({s.label, num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB"), num(s.instability_mean, "%.5f"),
                     num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
-                    num(s.elsewhere_psnr, "%.2f dB")});
+                    num(s.elsewhere_psnr, "%.2f dB"), num(s.moving_psnr, "%.2f dB")});
   }
-  return format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere"}, rows);
+  return format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere",
+                       "moving refl."},
+                      rows);
 }
 
 std::string sequence_svg(const SequenceResults& r) {

@@ -57,6 +57,9 @@ struct SequenceSummary {
   std::optional<double> change_mean, truth_change_mean, change_ratio;
   std::optional<double> disoccluded_psnr, elsewhere_psnr;   // final image vs truth
   std::size_t disoccluded_pixels = 0;
+  // The part of `elsewhere` whose true reflection moved since the truth frame before (trails).
+  std::optional<double> moving_psnr;
+  std::size_t moving_pixels = 0;
   std::vector<std::optional<double>> convergence;           // PSNR per truth frame (null: nothing reflects)
   std::vector<int> convergence_frames;                      // the frame index of each
   std::size_t nonfinite = 0;                                // over every frame
