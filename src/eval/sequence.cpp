@@ -23,7 +23,12 @@ CameraPath sequence_path(const Scene& scene, const std::string& name) {
     return CameraPath{kStillPath, "the default camera, standing still", {CameraKey{0.0f, c.position, c.target, c.fov_y_deg, false}}};
   }
   if (name.empty()) return a.paths[static_cast<std::size_t>(std::max(a.default_path, 0))];
-  return find_path(scene, name);
+  for (const CameraPath& p : a.paths)
+    if (p.name == name) return p;
+  std::string names;  // the scene's paths, and this command's own
+  for (const CameraPath& p : a.paths) names += p.name + ", ";
+  throw InputError("scene '" + scene.name + "' has no camera path '" + name + "' (paths: " + names + kStillPath +
+                   " for the default camera standing still).");
 }
 
 namespace {

@@ -99,6 +99,7 @@ bad() {
   [ "$(ls "$out")" = "err.txt" ] || { echo "files left behind for: $*"; ls "$out"; exit 1; }
 }
 bad --scene gallery --path nowhere --frames 2
+grep -q "paths: dolly, orbit, pan, slide, enter, cut, still" "$tmp/bad/err.txt" || { echo "the paths listed lack 'still':"; cat "$tmp/bad/err.txt"; exit 1; }
 bad --scene gallery --frames 0
 bad --scene gallery --frames 2 --truth-every 0
 bad --scene gallery --frames 2 --fps 0
