@@ -701,13 +701,18 @@ void Viewer::draw_progress(const std::string& what, double fraction) {
   window_->present();
 }
 
+// The technique and every parameter not at its default, as the CLI labels a --set row: "hiz"
+// alone is hiz at its defaults (a side with denoise=true read as plain hiz). Past four, a count.
 std::string Viewer::side_label(int i) const {
   Technique& t = *sides_[i].technique;
   std::string label = t.name();
-  if (i > 1 || !sides_[1 - i].technique || sides_[1 - i].technique->name() != t.name()) return label;
-  ParamSet mine = t.params(), other = sides_[1 - i].technique->params();
+  ParamSet mine = t.params();
+  constexpr int kShown = 4;
+  int set = 0;
   for (std::size_t k = 0; k < mine.size(); ++k)
-    if (mine.to_string(k) != other.to_string(k)) label += " " + std::string(mine.table()[k].name) + "=" + mine.to_string(k);
+    if (mine.to_string(k) != mine.default_string(k) && ++set <= kShown)
+      label += " " + std::string(mine.table()[k].name) + "=" + mine.to_string(k);
+  if (set > kShown) label += " (+" + std::to_string(set - kShown) + " more set)";
   return label;
 }
 
