@@ -309,6 +309,24 @@ TEST(Results, TableCorrectIsPooledAsCover) {
   EXPECT_EQ(t.find("100.00"), std::string::npos) << t;
 }
 
+// A false-hit share of a handful of pixels reads as a regression: under 100 missing and sky
+// pixels the table gives the count.
+TEST(Results, TableFalseHitsOfFewPixelsAreCounted) {
+  RunResults run = sample_run();
+  RegionFigures all;
+  all.region = {RegionKind::All, 0};
+  all.pixels = 1000;
+  all.handled_pixels = 1000;
+  all.missing.pixels = 19;
+  all.missing.false_hit_rate = 2.0 / 19.0;
+  run.results[0].breakdown.regions = {all};
+  EXPECT_NE(results_table(run, "gpu").find("2 of 19"), std::string::npos) << results_table(run, "gpu");
+  all.sky.pixels = 181;  // 200 pixels in all: a share again
+  all.sky.false_hit_rate = 0.0;
+  run.results[0].breakdown.regions = {all};
+  EXPECT_NE(results_table(run, "gpu").find("1.0%"), std::string::npos) << results_table(run, "gpu");
+}
+
 TEST(Results, WriteTextFileAtomic) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("ssrlab_results_test_" + std::to_string(::getpid()));
