@@ -25,6 +25,9 @@ expect_exit() {
   ok
 }
 
+# says WORDS: the refusal just checked holds WORDS (another refusal of the same input passed).
+says() { grep -qF -- "$1" "$tmp/stderr" || bad "refused, but not for '$1': $(cat "$tmp/stderr")"; }
+
 S="--size 64x36"
 # --- good input -------------------------------------------------------------------------------
 expect_exit 0 render --scene gallery --technique none $S --out "$tmp/out.png"
@@ -51,41 +54,41 @@ expect_exit 0 render --technique linear --view difference $S --out "$tmp/d.png"
 grep -q "view difference" "$tmp/stdout" && [ -s "$tmp/d.png" ] && ok || bad "render --view difference wrote no PNG"
 
 # --- bad input: one sentence, exit 2, nothing written -----------------------------------------
-expect_exit 2 render --technique reference --view difference $S --out "$tmp/out.png"
-expect_exit 2 render --technique linear --view difference $S --out "$tmp/out.exr"
-expect_exit 2 render --scene nope $S --out "$tmp/out.png"
-expect_exit 2 render --scene "$tmp/missing.json" $S --out "$tmp/out.png"
-expect_exit 2 render --technique nope $S --out "$tmp/out.png"
-expect_exit 2 render --set linear.nope=1 $S --out "$tmp/out.png"
-expect_exit 2 render --set dda.thickness=1 $S --out "$tmp/out.png"
-expect_exit 2 render --set linear.max_steps=0 $S --out "$tmp/out.png"
-expect_exit 2 render --set linear.thickness=nan $S --out "$tmp/out.png"
-expect_exit 2 render --set linear.max_steps $S --out "$tmp/out.png"
-expect_exit 2 render --size 0x0 --out "$tmp/out.png"
-expect_exit 2 render --size 1x0 --out "$tmp/out.png"
-expect_exit 2 render --size 100000x100000 --out "$tmp/out.png"
-expect_exit 2 render --size 40000x8 --out "$tmp/out.png"
-expect_exit 2 render --size big --out "$tmp/out.png"
-expect_exit 2 render --camera nope $S --out "$tmp/out.png"
-expect_exit 2 render --view nope $S --out "$tmp/out.png"
-expect_exit 2 render --technique linear --view spatial $S --out "$tmp/out.png"
-expect_exit 2 render --technique none --view steps $S --out "$tmp/out.png"
-expect_exit 2 render --preset stochastic-mega $S --out "$tmp/out.png"
-expect_exit 2 render --technique stochastic --set stochastic.roughness_threshold=1.5 $S --out "$tmp/out.png"
-expect_exit 2 render --technique stochastic --set stochastic.rays_per_quad=3 $S --out "$tmp/out.png"
-expect_exit 2 render $S --out "$tmp/out.jpg"
-expect_exit 2 render $S --out "$tmp/no/such/dir/out.png"
-expect_exit 2 render $S --exposure abc --out "$tmp/out.png"
-expect_exit 2 render $S --gl vulkan --out "$tmp/out.png"
-expect_exit 2 render $S
-expect_exit 2 nosuchcommand
+expect_exit 2 render --technique reference --view difference $S --out "$tmp/out.png"; says "scores a technique against the reference"
+expect_exit 2 render --technique linear --view difference $S --out "$tmp/out.exr"; says "writes a .png"
+expect_exit 2 render --scene nope $S --out "$tmp/out.png"; says "unknown scene 'nope'"
+expect_exit 2 render --scene "$tmp/missing.json" $S --out "$tmp/out.png"; says "missing.json' does not exist"
+expect_exit 2 render --technique nope $S --out "$tmp/out.png"; says "unknown technique 'nope'"
+expect_exit 2 render --set linear.nope=1 $S --out "$tmp/out.png"; says "unknown parameter 'linear.nope'"
+expect_exit 2 render --set dda.thickness=1 $S --out "$tmp/out.png"; says "does not belong to technique 'linear'"
+expect_exit 2 render --set linear.max_steps=0 $S --out "$tmp/out.png"; says "must be in [1, 8192], got 0"
+expect_exit 2 render --set linear.thickness=nan $S --out "$tmp/out.png"; says "got nan"
+expect_exit 2 render --set linear.max_steps $S --out "$tmp/out.png"; says "not of the form key=value"
+expect_exit 2 render --size 0x0 --out "$tmp/out.png"; says "must be at least 1x1"
+expect_exit 2 render --size 1x0 --out "$tmp/out.png"; says "must be at least 1x1"
+expect_exit 2 render --size 100000x100000 --out "$tmp/out.png"; says "more than the 67108864"
+expect_exit 2 render --size 40000x8 --out "$tmp/out.png"; says "more than this GL supports"
+expect_exit 2 render --size big --out "$tmp/out.png"; says "not of the form WIDTHxHEIGHT"
+expect_exit 2 render --camera nope $S --out "$tmp/out.png"; says "no camera 'nope'"
+expect_exit 2 render --view nope $S --out "$tmp/out.png"; says "unknown view 'nope'"
+expect_exit 2 render --technique linear --view spatial $S --out "$tmp/out.png"; says "does not fill the view 'spatial'"
+expect_exit 2 render --technique none --view steps $S --out "$tmp/out.png"; says "does not fill the view 'steps'"
+expect_exit 2 render --preset stochastic-mega $S --out "$tmp/out.png"; says "unknown preset 'stochastic-mega'"
+expect_exit 2 render --technique stochastic --set stochastic.roughness_threshold=1.5 $S --out "$tmp/out.png"; says "must be in [0, 1], got 1.5"
+expect_exit 2 render --technique stochastic --set stochastic.rays_per_quad=3 $S --out "$tmp/out.png"; says "takes one of 1|2|4, got '3'"
+expect_exit 2 render $S --out "$tmp/out.jpg"; says "must end in .png or .exr"
+expect_exit 2 render $S --out "$tmp/no/such/dir/out.png"; says "does not exist"
+expect_exit 2 render $S --exposure abc --out "$tmp/out.png"; says "--exposure cannot take the value 'abc'"
+expect_exit 2 render $S --gl vulkan --out "$tmp/out.png"; says "unknown GL path 'vulkan'"
+expect_exit 2 render $S; says "--out is required"
+expect_exit 2 nosuchcommand; says "unknown subcommand 'nosuchcommand'"
 # Found by a review: a preset beside --technique (one was silently ignored), --shaders naming a
 # file or a folder without shaders, an empty --techniques list (it ran every technique), the
 # extra plots beside --plot colliding with --json (found only after every run).
-expect_exit 2 render --technique dda --preset thesis-hq $S --out "$tmp/out.png"
-expect_exit 2 render --shaders "$TESTDATA/json/minimal.json" $S --out "$tmp/out.png"
+expect_exit 2 render --technique dda --preset thesis-hq $S --out "$tmp/out.png"; says "--technique excludes --preset"
+expect_exit 2 render --shaders "$TESTDATA/json/minimal.json" $S --out "$tmp/out.png"; says "is not a directory"
 mkdir -p "$tmp/empty_shaders"
-expect_exit 2 render --shaders "$tmp/empty_shaders" $S --out "$tmp/out.png"
+expect_exit 2 render --shaders "$tmp/empty_shaders" $S --out "$tmp/out.png"; says "holds no render/gbuffer.vert"
 # A shader that does not compile is named where it is: in the directory given (it said shaders/...).
 cp -r "$(dirname "$0")/../../shaders" "$tmp/broken_shaders"
 echo 'syntax error here' >>"$tmp/broken_shaders/techniques/linear.comp"
