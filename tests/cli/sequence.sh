@@ -87,7 +87,8 @@ else
 fi
 
 # Bad input: exit 2, one line on stderr, nothing written.
-bad() {
+bad() {  # bad WORDS ARGS...: exit 2, one line holding WORDS, nothing written
+  local want=$1; shift
   local out="$tmp/bad"
   rm -rf "$out"; mkdir "$out"
   set +e
@@ -97,26 +98,27 @@ bad() {
   [ $rc -eq 2 ] || { echo "expected exit 2, got $rc for: $*"; cat "$out/err.txt"; exit 1; }
   [ "$(wc -l < "$out/err.txt")" -eq 1 ] || { echo "expected one line for: $*"; cat "$out/err.txt"; exit 1; }
   [ "$(ls "$out")" = "err.txt" ] || { echo "files left behind for: $*"; ls "$out"; exit 1; }
+  grep -qF -- "$want" "$out/err.txt" || { echo "refused, but not for '$want': $*"; cat "$out/err.txt"; exit 1; }
 }
-bad --scene gallery --path nowhere --frames 2
+bad "no camera path 'nowhere'" --scene gallery --path nowhere --frames 2
 grep -q "paths: dolly, orbit, pan, slide, enter, cut, still" "$tmp/bad/err.txt" || { echo "the paths listed lack 'still':"; cat "$tmp/bad/err.txt"; exit 1; }
-bad --scene gallery --frames 0
-bad --scene gallery --frames 2 --truth-every 0
-bad --scene gallery --frames 2 --fps 0
-bad --scene gallery --frames 3 --fps 1e-40  # frame times would overflow a float
-bad --scene gallery --frames 2 --frames 3
-bad --scene gallery --frames 2 --video "$tmp/missing-dir/v.mp4"
-bad --scene gallery --frames 2 --video "$tmp/bad/v.gif"
-bad --scene gallery --frames 2 --out "$tmp"
-bad --scene gallery --frames 2 --techniques nothing
-bad --scene gallery --frames 2 --techniques ""
-bad --scene gallery --frames 2 --out "$tmp/bad/r.json"  # the --json file of bad()
-bad --scene gallery --frames 2 --out "$tmp/bad/r.json/"
+bad '--frames must be in' --scene gallery --frames 0
+bad '--truth-every must be in' --scene gallery --frames 2 --truth-every 0
+bad '--fps must be in' --scene gallery --frames 2 --fps 0
+bad '--fps must be in' --scene gallery --frames 3 --fps 1e-40  # frame times would overflow a float
+bad 'given more than once' --scene gallery --frames 2 --frames 3
+bad 'of --video does not exist' --scene gallery --frames 2 --video "$tmp/missing-dir/v.mp4"
+bad 'must end in .mp4 or .mkv' --scene gallery --frames 2 --video "$tmp/bad/v.gif"
+bad 'must be a new or empty directory' --scene gallery --frames 2 --out "$tmp"
+bad "unknown technique 'nothing'" --scene gallery --frames 2 --techniques nothing
+bad 'needs a value, not an empty string' --scene gallery --frames 2 --techniques ""
+bad 'name the same path' --scene gallery --frames 2 --out "$tmp/bad/r.json"  # the --json file of bad()
+bad 'name the same path' --scene gallery --frames 2 --out "$tmp/bad/r.json/"
 # "frames/" (a shell's completion) is the directory frames: its temporary lands beside it.
 mkdir "$tmp/slash"
 seq --scene gallery --path still --frames 2 --techniques none --json "$tmp/slash.json" --out "$tmp/slash/" > /dev/null
 [ "$(ls "$tmp/slash")" = "$(printf 'frame_00000.png\nframe_00001.png')" ] || { echo "--out DIR/ holds:"; ls -a "$tmp/slash"; exit 1; }
-NO_FFMPEG=1 bad --scene gallery --frames 2 --video "$tmp/bad/v.mp4"
+NO_FFMPEG=1 bad 'needs ffmpeg' --scene gallery --frames 2 --video "$tmp/bad/v.mp4"
 
 # A signal while frames and a video are written: they are removed, not left as temporaries.
 stopped="$tmp/stopped"
