@@ -89,6 +89,7 @@ void Renderer::set_lighting(const std::vector<Light>& lights, const Environment&
   gpu_scene_->upload_lights(lights);
   ++generation_;
   inputs_valid_ = false;
+  inputs_lost_ = "the lighting changed";
 }
 
 void Renderer::reload_shaders() {
@@ -107,6 +108,7 @@ void Renderer::reload_shaders() {
   display_prog_ = std::move(display);
   hiz_ = std::move(hiz);
   inputs_valid_ = false;
+  inputs_lost_ = "the shaders were reloaded";
 }
 
 void Renderer::resize(int width, int height) {
@@ -159,6 +161,7 @@ void Renderer::resize(int width, int height) {
   history_.reset();  // reallocated at the new size when a technique next declares it
   ++generation_;
   inputs_valid_ = false;
+  inputs_lost_ = "the image size changed";
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw RuntimeError("the GL has not enough memory for " + std::to_string(width) + "x" +
                        std::to_string(height) + " targets.");
@@ -281,6 +284,12 @@ void Renderer::begin_frame(const FrameRequest& request) {
   // same scene, with nothing between them that invalidates it.
   const bool continues = serial_ > 0 && inputs_valid_ && request.time.index == time_.index + 1 &&
                          !request.time.cut && same_inputs(settings, frame_settings_);
+  const char* why_not = continues                                ? ""
+                        : serial_ == 0                          ? "the first frame"
+                        : !inputs_valid_                        ? inputs_lost_
+                        : request.time.cut                      ? "a camera cut"
+                        : request.time.index != time_.index + 1 ? "not the next frame of a sequence"
+                                                                : "the frame settings changed";
   const float previous_seconds = time_.seconds;
   const glm::mat4 previous_view_proj = matrices_.proj * matrices_.view;
   const glm::mat4 previous_view = matrices_.view;
@@ -307,6 +316,7 @@ void Renderer::begin_frame(const FrameRequest& request) {
     attach_gbuffer();
   }
   history_valid_ = continues;
+  history_break_ = why_not;
   ++serial_;
   frame_settings_ = settings;
   inputs_valid_ = true;

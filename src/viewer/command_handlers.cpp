@@ -195,7 +195,8 @@ void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : 
 // "frame_ms" (the last timed frame; null before one), "image": [w, h], "truth": "none" | "current" | "stale" | "not computed" | "computing", "psnr",
 // "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
 // "frame" (the index of the frame shown: history counts it), "history" (true: carried over from
-// the frame before; false: restarted by a cut, a jump or a change), "time" (scene seconds)}.
+// the frame before; false: restarted by a cut, a jump or a change), "history_break" (why not, or
+// null), "time" (scene seconds)}.
 void Viewer::on_Status(const std::string&) {
   nlohmann::json j;
   j["message"] = status_;
@@ -214,6 +215,7 @@ void Viewer::on_Status(const std::string&) {
   j["sections_open"] = open;
   j["frame"] = frame_index_;
   j["history"] = renderer_->history_valid();
+  j["history_break"] = renderer_->history_valid() ? nlohmann::json() : nlohmann::json(renderer_->history_break());
   j["time"] = time_;
   std::printf("ssrlab-view: status %s\n", j.dump().c_str());
   std::fflush(stdout);

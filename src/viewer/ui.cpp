@@ -654,7 +654,10 @@ void Viewer::time_panel() {
   float t = time_;
   if (ImGui::SliderFloat("time", &t, 0.0f, std::max(anim.duration, 0.01f), "%.2f s")) set_time(t);
   ImGui::SliderFloat("speed", &speed_, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
-  ImGui::TextDisabled("frame %d, %s", frame_index_, renderer_->history_valid() ? "history carried" : "history restarted");
+  if (renderer_->history_valid())
+    ImGui::TextDisabled("frame %d, history carried", frame_index_);
+  else
+    ImGui::TextDisabled("frame %d, history restarted: %s", frame_index_, renderer_->history_break());
 }
 
 std::optional<double> Viewer::shown_frame_ms(double dt) const {

@@ -233,12 +233,17 @@ assert pixels('shot1.png') == pixels('shot4.png'), 'a window-shot of another vie
 PY
 # Jumping to a named camera or onto a path is a cut: the history restarts (it carried the old
 # view's, worse than none). Moving along a path carries it.
-printf 'frames 3\nstatus\ncamera corner\nframes 1\nstatus\nframes 1\nstatus\npath free\nframes 1\npath dolly\nframes 1\nstatus\n' > jump.txt
+# Each restart says why: a jump is a cut, and switching to or from the grid resizes (its cells
+# are a quarter of the image), which the status said nothing about.
+printf 'frames 3\nstatus\ncamera corner\nframes 1\nstatus\nframes 1\nstatus\npath free\nframes 1\npath dolly\nframes 1\nstatus\ncompare grid\nframes 1\nstatus\n' > jump.txt
 view --scene cornell --size 160x90 --script jump.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
 python3 - <<'PY'
 import json
-s = [json.loads(l.split('status ', 1)[1])['history'] for l in open('log.txt') if 'ssrlab-view: status ' in l]
-assert s == [True, False, True, False], f'history carried after frames, camera, frames, path: {s}'
+st = [json.loads(l.split('status ', 1)[1]) for l in open('log.txt') if 'ssrlab-view: status ' in l]
+s = [x['history'] for x in st]
+assert s == [True, False, True, False, False], f'history carried after frames, camera, frames, path, grid: {s}'
+why = [x['history_break'] for x in st]
+assert why == [None, 'a camera cut', None, 'a camera cut', 'the image size changed'], why
 PY
 # `truth now` with no reference shown says so (it did nothing without a word).
 printf 'technique-b hiz\ncompare split\nframes 1\ntruth now\nstatus\n' > truth-now.txt
