@@ -68,6 +68,7 @@ nlohmann::json technique_json(const TechniqueResult& r) {
       {"regions", breakdown_json(r.breakdown)},
       {"telemetry", telemetry_json(r.telemetry)},
       {"nonfinite", r.error.nonfinite},
+      {"varies_per_frame", r.varies_per_frame},
   };
 }
 
@@ -392,6 +393,11 @@ std::string results_table(const RunResults& run, const std::string& clock) {
   out += format_table(header, rows);
   out += "trace dB: vs the screen-space ideal on traceable pixels; correct/ok: traceable pixels hit "
          "with the right colour; n/a: not handled.\n";
+  std::string varying;
+  for (const TechniqueResult& r : run.results)
+    if (r.varies_per_frame) varying += (varying.empty() ? "" : ", ") + (r.label.empty() ? r.technique : r.label);
+  if (!varying.empty())
+    out += "first frame, before any history: " + varying + " accumulate over frames (ssrlab sequence scores them there).\n";
   if (run.truth_noise)
     out += "truth noise floor: what the noise-free truth would score against this sampled one; a figure near it "
            "is the truth's noise, not the technique's error (raise reference.samples).\n";

@@ -47,6 +47,9 @@ struct TechniqueResult {
   ErrorMetrics error;
   Breakdown breakdown;              // per region and class (empty: not scored)
   std::optional<IterationStats> telemetry;  // one instrumented frame; none: the technique does not iterate
+  // Its image changes frame to frame on a still camera (TechniqueDecl::varies_per_frame: history,
+  // new samples): the figures are of its first frame, before any history.
+  bool varies_per_frame = false;
 };
 
 // The truth's own sampling noise (rough pixels, several bounces): as PSNR, what the noise-free

@@ -274,6 +274,7 @@ EvaluatedVariant evaluate_variant(Renderer& renderer, ScoredFrame& frame, const 
   ev.result.label = variant.label();
   ev.result.params = param_list(*t);
   ev.result.ran_params = param_list(t->ran_params());
+  ev.result.varies_per_frame = t->declare().varies_per_frame;
   ev.result.time_ms = tm.technique;
   ev.result.passes = tm.passes;
   ev.result.error = ev.score.error;

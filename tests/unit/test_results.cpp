@@ -138,7 +138,7 @@ TEST(Results, JsonHasEveryFieldOfTheContract) {
   ASSERT_EQ(j["results"].size(), 2u);
   for (const auto& r : j["results"]) {
     for (const char* k : {"technique", "preset", "params", "time_ms", "passes", "floor_ms",
-                          "time_over_floor", "error", "nonfinite"}) {
+                          "time_over_floor", "error", "nonfinite", "ran_params", "varies_per_frame"}) {
       EXPECT_TRUE(r.contains(k)) << k;
     }
     for (const char* k : {"median", "min", "max"}) EXPECT_TRUE(r["time_ms"].contains(k)) << k;
@@ -325,6 +325,16 @@ TEST(Results, TableFalseHitsOfFewPixelsAreCounted) {
   all.sky.false_hit_rate = 0.0;
   run.results[0].breakdown.regions = {all};
   EXPECT_NE(results_table(run, "gpu").find("1.0%"), std::string::npos) << results_table(run, "gpu");
+}
+
+// A technique whose image changes frame to frame is scored on its first frame: the table says so
+// and names it (a stochastic row read as its converged figure).
+TEST(Results, TableSaysWhichRowsAreAFirstFrame) {
+  RunResults run = sample_run();
+  EXPECT_EQ(results_table(run, "gpu").find("first frame"), std::string::npos);
+  run.results[0].varies_per_frame = true;
+  const std::string t = results_table(run, "gpu");
+  EXPECT_NE(t.find("first frame, before any history: linear accumulate"), std::string::npos) << t;
 }
 
 TEST(Results, WriteTextFileAtomic) {
