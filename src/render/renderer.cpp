@@ -248,7 +248,7 @@ void Renderer::render_inputs(const FrameRequest& request, gl::PassTimer* timer) 
   gbuffer_pass(timer);
   lighting_pass(timer);
   // Without a previous frame the history holds this one: reprojection reads the identity.
-  if (history_ && !history_valid_) {
+  if (history_ && !history_valid()) {
     copy_texture(lit_, history_->lit);
     copy_texture(gbuffer_.depth, history_->depth);
     copy_texture(gbuffer_.normal_roughness, history_->normal_roughness);
@@ -315,7 +315,6 @@ void Renderer::begin_frame(const FrameRequest& request) {
     std::swap(gbuffer_.normal_roughness, history_->normal_roughness);
     attach_gbuffer();
   }
-  history_valid_ = continues;
   history_break_ = why_not;
   ++serial_;
   frame_settings_ = settings;
@@ -433,7 +432,9 @@ void Renderer::ensure_history() {
   copy_texture(lit_, history_->lit);
   copy_texture(gbuffer_.depth, history_->depth);
   copy_texture(gbuffer_.normal_roughness, history_->normal_roughness);
-  history_valid_ = false;
+  // A frame that kept its history until a technique first asked for it (a reason already given,
+  // a resize or the first frame, stays).
+  if (history_valid()) history_break_ = "no technique kept a history before this frame";
 }
 
 Renderer::TechniqueState& Renderer::technique_state(Technique& t, const TechniqueDecl& decl) {
@@ -441,7 +442,7 @@ Renderer::TechniqueState& Renderer::technique_state(Technique& t, const Techniqu
   TechniqueState& s = it->second;
   const std::string params = param_signature(t.params());
   const bool same_frame = !fresh && s.serial == serial_;
-  const bool continues = !fresh && s.serial + 1 == serial_ && history_valid_;
+  const bool continues = !fresh && s.serial + 1 == serial_ && history_valid();
   const bool resized = s.width != width_ || s.height != height_;
   bool reset = fresh || (!same_frame && !continues) || s.params != params || resized ||
                s.generation != generation_;
@@ -518,7 +519,7 @@ void Renderer::technique_pass(Technique& t, const TechniqueDecl& decl, Technique
   };
   rebind();
   FrameContext ctx{width_, height_, posed_scene(), geometry_id_, camera_, matrices_, frame_settings_,
-                   time_, serial_, history_valid_, state.prev_color_valid, scene_diagonal_, frame_ubo_.id(),
+                   time_, serial_, history_valid(), state.prev_color_valid, scene_diagonal_, frame_ubo_.id(),
                    gbuffer_, lit_, motion_, hiz_built_ ? &hiz_.texture() : nullptr, *gpu_scene_, {}, &reflection_,
                    &refraction_, debug ? &debug_ : nullptr, timer, rebind};
   for (gl::Texture2D& tex : state.textures) ctx.textures.push_back(&tex);

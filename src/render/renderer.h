@@ -110,7 +110,7 @@ class Renderer {
   const gl::Texture2D* prev_normal_roughness() const { return history_ ? &history_->normal_roughness : nullptr; }
   // Whether this frame's history resources hold the previous frame (false on the first frame, a
   // cut, a resize, a skipped index, a scene change).
-  bool history_valid() const { return history_valid_; }
+  bool history_valid() const { return *history_break_ == '\0'; }
   // Why it does not ("" when it does): "the first frame", "the image size changed", "a camera
   // cut", ... (the viewer says it: a layout switch to or from the grid's cells is a resize).
   const char* history_break() const { return history_break_; }
@@ -197,8 +197,7 @@ class Renderer {
   FrameSettings frame_settings_{};  // the settings the current inputs were rendered with
   bool inputs_valid_ = false;       // the targets hold the frame described by camera_/time_
   const char* inputs_lost_ = "the first frame";  // why inputs_valid_ went false
-  bool history_valid_ = false;
-  const char* history_break_ = "the first frame";
+  const char* history_break_ = "the first frame";  // "" while the history holds the frame before
   // The last technique's stage views: the texture each shows (display_pass binds it).
   std::vector<std::pair<ViewMode, GLuint>> stage_views_;
   bool backfaces_built_ = false, hiz_built_ = false;  // this frame's on-demand resources

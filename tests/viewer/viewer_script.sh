@@ -235,15 +235,16 @@ PY
 # view's, worse than none). Moving along a path carries it.
 # Each restart says why: a jump is a cut, and switching to or from the grid resizes (its cells
 # are a quarter of the image), which the status said nothing about.
-printf 'frames 3\nstatus\ncamera corner\nframes 1\nstatus\nframes 1\nstatus\npath free\nframes 1\npath dolly\nframes 1\nstatus\ncompare grid\nframes 1\nstatus\n' > jump.txt
+printf 'frames 3\nstatus\ncamera corner\nframes 1\nstatus\nframes 1\nstatus\npath free\nframes 1\npath dolly\nframes 1\nstatus\ncompare grid\nframes 1\nstatus\ntechnique stochastic\nframes 1\nstatus\n' > jump.txt
 view --scene cornell --size 160x90 --script jump.txt > log.txt 2>&1 || { cat log.txt; exit 1; }
 python3 - <<'PY'
 import json
 st = [json.loads(l.split('status ', 1)[1]) for l in open('log.txt') if 'ssrlab-view: status ' in l]
 s = [x['history'] for x in st]
-assert s == [True, False, True, False, False], f'history carried after frames, camera, frames, path, grid: {s}'
+assert s == [True, False, True, False, False, False], f'history carried after frames, camera, frames, path, grid, stochastic: {s}'
 why = [x['history_break'] for x in st]
-assert why == [None, 'a camera cut', None, 'a camera cut', 'the image size changed'], why
+assert why == [None, 'a camera cut', None, 'a camera cut', 'the image size changed',
+               'no technique kept a history before this frame'], why
 PY
 # `truth now` with no reference shown says so (it did nothing without a word).
 printf 'technique-b hiz\ncompare split\nframes 1\ntruth now\nstatus\n' > truth-now.txt
