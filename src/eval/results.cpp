@@ -395,7 +395,7 @@ std::string results_table(const RunResults& run, const std::string& clock) {
          "with the right colour; n/a: not handled.\n";
   std::string varying;
   for (const TechniqueResult& r : run.results)
-    if (r.varies_per_frame) varying += (varying.empty() ? "" : ", ") + (r.label.empty() ? r.technique : r.label);
+    if (r.varies_per_frame) varying += (varying.empty() ? "" : ", ") + row_name(r);
   if (!varying.empty())
     out += "first frame, before any history: " + varying + " accumulate over frames (ssrlab sequence scores them there).\n";
   if (run.truth_noise)

@@ -122,10 +122,11 @@ std::optional<TruthNoise> ScoredFrame::truth_noise() {
   if (truth_noise_) return *truth_noise_;
   const ParamSet p = reference_.params();
   const auto value = [&](const char* key) { return p.get(static_cast<std::size_t>(p.find(key))); };
+  const double mirror_roughness = value("mirror_roughness");
   bool sampled = value("bounces") > 1;
   for (std::size_t i = 0; i < labels_.classes.size() && !sampled; ++i)
     sampled = labels_.classes[i] != PixelClass::NotReflective && !labels_.glass[i] &&
-              labels_.roughness[i] >= value("mirror_roughness");
+              labels_.roughness[i] >= mirror_roughness;
   if (!sampled) return *(truth_noise_ = std::optional<TruthNoise>());
   // A seed apart from the noise floor's run (7919), so the two truths are independent.
   rerun_reference(static_cast<int>(value("samples")), 2 * 7919);

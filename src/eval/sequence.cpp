@@ -65,6 +65,20 @@ struct GhostSums {
 // (README: ghosting).
 constexpr float kMovingReflection = 0.1f;
 
+// Per pixel of this frame: whether its true reflection moved (kMovingReflection) since the truth
+// frame before, at the pixel it reprojects to. Once per truth frame, for every technique.
+std::vector<bool> moved_reflections(const std::vector<int>& previous, const RgbaImageF& now, const RgbaImageF& before) {
+  std::vector<bool> out(previous.size(), false);
+  for (std::size_t p = 0; p < previous.size(); ++p) {
+    if (previous[p] < 0) continue;
+    const std::size_t q = static_cast<std::size_t>(previous[p]);
+    float change = 0;
+    for (std::size_t c = 0; c < 3; ++c) change = std::max(change, std::abs(now.pixels[p * 4 + c] - before.pixels[q * 4 + c]));
+    out[p] = change > kMovingReflection;
+  }
+  return out;
+}
+
 std::optional<double> psnr_of(double sum, std::size_t px) {
   if (px == 0) return std::nullopt;
   return psnr_from_rmse(std::sqrt(sum / (3.0 * static_cast<double>(px))));
@@ -124,6 +138,8 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     std::optional<ScoredFrame> scored;
     if (truth) scored.emplace(renderer, request, reference);
     const bool pair = truth && truth_before && i > 0 && !cut;
+    const std::vector<bool> moving =
+        pair ? moved_reflections(previous, scored->truth_reflected(), truth_reflected_before) : std::vector<bool>();
 
     SequenceFrame frame{i, t, cut, truth, {}};
     std::vector<RgbaImageF> finals(runs.size());
@@ -151,16 +167,9 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           } else {
             run.ghost.elsewhere += e;
             ++run.ghost.elsewhere_px;
-            if (pair && previous[p] >= 0) {
-              const std::size_t q = static_cast<std::size_t>(previous[p]);
-              float change = 0;
-              for (std::size_t c = 0; c < 3; ++c)
-                change = std::max(change, std::abs(scored->truth_reflected().pixels[p * 4 + c] -
-                                                   truth_reflected_before.pixels[q * 4 + c]));
-              if (change > kMovingReflection) {
-                run.ghost.moving += e;
-                ++run.ghost.moving_px;
-              }
+            if (!moving.empty() && moving[p]) {
+              run.ghost.moving += e;
+              ++run.ghost.moving_px;
             }
           }
         }
