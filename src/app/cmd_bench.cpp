@@ -308,8 +308,8 @@ int run_bench(const BenchOptions& o) {
       progress(done, total, scene.name + " " + size_name(w, h) + " reference");
       auto frame = std::make_unique<ScoredFrame>(*renderer, camera, *reference);
       RunResults run{scene.name, w, h, frame->inherent_psnr(), {}, frame->inherent(), std::nullopt, param_list(*reference),
-                     param_list(frame_settings_params(renderer->settings))};
-      run.truth_noise = frame->truth_noise();  // with the reference's run, before any timing
+                     param_list(frame_settings_params(renderer->settings)),
+                     frame->truth_noise()};  // with the reference's run, before any timing
       for (const Variant& v : variants) {
         progress(done, total, scene.name + " " + size_name(w, h) + " " + v.label());
         EvaluatedVariant ev = evaluate_variant(*renderer, *frame, camera, v, timing);
