@@ -74,6 +74,11 @@ nlohmann::json technique_json(const TechniqueResult& r) {
 
 }  // namespace
 
+nlohmann::json truth_noise_json(const std::optional<TruthNoise>& n) {
+  if (!n) return nullptr;
+  return {{"psnr", optional_json(n->psnr)}, {"psnr_traceable", optional_json(n->psnr_traceable)}};
+}
+
 nlohmann::json telemetry_json(const std::optional<IterationStats>& t) {
   if (!t) return nullptr;
   return nlohmann::json{
@@ -100,9 +105,7 @@ nlohmann::json run_json(const RunResults& run) {
       {"inherent", {{"traceable", optional_json(run.inherent.traceable)},
                     {"missing", optional_json(run.inherent.missing)},
                     {"sky", optional_json(run.inherent.sky)}}},
-      {"truth_noise", run.truth_noise ? nlohmann::json{{"psnr", optional_json(run.truth_noise->psnr)},
-                                                      {"psnr_traceable", optional_json(run.truth_noise->psnr_traceable)}}
-                                      : nlohmann::json()},
+      {"truth_noise", truth_noise_json(run.truth_noise)},
   };
   if (run.oracles)
     j["oracles"] = {{"pixels", run.oracles->pixels}, {"psnr", optional_json(run.oracles->psnr)},

@@ -131,6 +131,7 @@ std::optional<TruthNoise> ScoredFrame::truth_noise() {
   // A seed apart from the noise floor's run (7919), so the two truths are independent.
   rerun_reference(static_cast<int>(value("samples")), 2 * 7919);
   const RgbaImageF other = display_of(ViewMode::Final);
+  other_truth_reflected_ = display_of(ViewMode::Reflected);
   const auto noise = [&](auto keep) -> std::optional<double> {
     const std::optional<double> rmse = rmse_where(truth_, other, labels_.classes, keep);
     return rmse ? psnr_from_rmse(std::optional<double>(*rmse / std::sqrt(2.0))) : std::nullopt;
@@ -139,6 +140,10 @@ std::optional<TruthNoise> ScoredFrame::truth_noise() {
   n.psnr = noise([](PixelClass c) { return c != PixelClass::NotReflective; });
   n.psnr_traceable = noise([](PixelClass c) { return c == PixelClass::Traceable; });
   return *(truth_noise_ = std::optional<TruthNoise>(n));
+}
+
+const RgbaImageF* ScoredFrame::other_truth_reflected() {
+  return truth_noise() ? &other_truth_reflected_ : nullptr;
 }
 
 int technique_samples(Technique& t) {

@@ -53,6 +53,9 @@ class ScoredFrame {
   // half the mean squared difference of the two truths is the noise variance one carries. Run on
   // the first call; none when the truth samples nothing (every scored pixel a mirror, one bounce).
   std::optional<TruthNoise> truth_noise();
+  // That second truth's reflected radiance (display values), or null where the truth samples
+  // nothing: `sequence` compares the truth's change between frames under the two seeds.
+  const RgbaImageF* other_truth_reflected();
   // The references as the breakdown takes them; `samples` > 0 adds the noise floor of a
   // technique tracing that many rays per rough pixel (one more reference run per new count).
   ReferenceImages references(int samples);
@@ -75,6 +78,7 @@ class ScoredFrame {
   std::optional<double> inherent_psnr_;
   std::size_t rays_ = 0;
   std::optional<std::optional<TruthNoise>> truth_noise_;  // computed once
+  RgbaImageF other_truth_reflected_;                      // truth_noise()'s second truth
 };
 
 // The rays per rough pixel of a technique (its `samples` parameter), 0 when it has none.

@@ -122,6 +122,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   TemporalFrame before;
   std::vector<int> ages;
   RgbaImageF truth_reflected_before;
+  RgbaImageF other_truth_before;  // frame 0's truth under another seed (truth_noise)
   bool truth_before = false;
   float time_before = 0;
   for (int i = 0; i < spec.frames; ++i) {
@@ -138,6 +139,17 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     std::optional<ScoredFrame> scored;
     if (truth) scored.emplace(renderer, request, reference);
     const bool pair = truth && truth_before && i > 0 && !cut;
+    // Before any technique: these run the truth again with another seed.
+    if (i == 0) {
+      out.truth_noise = scored->truth_noise();
+      if (const RgbaImageF* other = scored->other_truth_reflected()) other_truth_before = *other;
+    } else if (i == 1 && pair && !other_truth_before.pixels.empty()) {
+      const RgbaImageF& a = scored->truth_reflected();
+      out.first_pair_noise_change = noise_in_change(previous, now, before, a, truth_reflected_before,
+                                                    *scored->other_truth_reflected(), other_truth_before);
+      const ChangeTotals t = change_totals(previous, now, before, a, truth_reflected_before, a, truth_reflected_before);
+      if (t.pixels) out.first_pair_truth_change = t.truth / static_cast<double>(t.pixels);
+    }
     const std::vector<bool> moving =
         pair ? moved_reflections(previous, scored->truth_reflected(), truth_reflected_before) : std::vector<bool>();
 
@@ -299,6 +311,11 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                        {"convergence_frames", s.convergence_frames},
                        {"nonfinite", s.nonfinite}});
   }
+  nlohmann::json truth_noise = truth_noise_json(r.truth_noise);
+  if (r.truth_noise) {
+    truth_noise["first_pair_change_mean"] = optional_json(r.first_pair_truth_change);
+    truth_noise["first_pair_noise_change_mean"] = optional_json(r.first_pair_noise_change);
+  }
   return {{"device", device_json(device)},
           {"revision", revision},
           {"scene", r.scene},
@@ -308,6 +325,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
           {"fps", r.fps},
           {"truth_every", r.truth_every},
           {"reference", params_json(r.reference_params)},
+          {"truth_noise", truth_noise},
           {"frame", params_json(r.frame_settings)},
           {"frames", frames},
           {"summary", summary}};
@@ -330,9 +348,18 @@ std::string sequence_table(const SequenceResults& r) {
                     num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
                     num(s.elsewhere_psnr, "%.2f dB"), num(s.moving_psnr, "%.2f dB")});
   }
-  return format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR", "elsewhere",
-                       "moving refl."},
-                      rows);
+  std::string out = format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR",
+                                  "elsewhere", "moving refl."},
+                                 rows);
+  if (!r.first_pair_noise_change || !r.first_pair_truth_change) return out;
+  const double noise = *r.first_pair_noise_change, change = *r.first_pair_truth_change;
+  out += "truth noise: from frame 0 to 1 the truth changes by " + num(change, "%.5f") +
+         " a pixel; its noise alone would change it by " + num(noise, "%.5f") +
+         " (a second truth with another seed; noise floor " + db_text(r.truth_noise->psnr) + " dB).\n";
+  if (noise > 0 && noise >= 0.5 * change)
+    out += "the truth's change is mostly noise: flicker up to that size is not seen and 'x truth' flatters every "
+           "technique (raise reference.samples).\n";
+  return out;
 }
 
 std::string sequence_svg(const SequenceResults& r) {

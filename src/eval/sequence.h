@@ -72,6 +72,11 @@ struct SequenceResults {
   int truth_every = 1;
   std::vector<std::pair<std::string, std::string>> reference_params;  // the truth's (reference.*)
   std::vector<std::pair<std::string, std::string>> frame_settings;    // frame.exposure, frame.reflective_f0
+  // The truth's own noise (ScoredFrame::truth_noise) on frame 0, and on the pair of frames 0 and 1
+  // the truth's mean change and the part of it that is noise (temporal.h noise_in_change): where
+  // that part is most of the change, flicker of that size is hidden in the truth's.
+  std::optional<TruthNoise> truth_noise;
+  std::optional<double> first_pair_truth_change, first_pair_noise_change;
   std::vector<SequenceFrame> frames;
   std::vector<SequenceSummary> summary;
 };
@@ -98,7 +103,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
                              const std::function<void(const SequenceImages&)>& on_frame);
 
 nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revision, const SequenceResults& r);
-// The summary as a text table.
+// The summary as a text table, with a line on the truth's noise where it was estimated.
 std::string sequence_table(const SequenceResults& r);
 // Two plots in one SVG: PSNR per frame, and flicker (mean excess change) per frame.
 std::string sequence_svg(const SequenceResults& r);

@@ -75,6 +75,26 @@ ChangeTotals change_totals(const std::vector<int>& previous, const TemporalFrame
   return t;
 }
 
+std::optional<double> noise_in_change(const std::vector<int>& previous, const TemporalFrame& now,
+                                      const TemporalFrame& before, const RgbaImageF& a_now, const RgbaImageF& a_before,
+                                      const RgbaImageF& b_now, const RgbaImageF& b_before) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0 || !now.reflective[i]) continue;
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (!before.reflective[j]) continue;
+    double d = 0;
+    for (std::size_t c = 0; c < 3; ++c)
+      d += std::abs((a_now.pixels[i * 4 + c] - a_before.pixels[j * 4 + c]) -
+                    (b_now.pixels[i * 4 + c] - b_before.pixels[j * 4 + c]));
+    sum += d / 3.0;
+    ++n;
+  }
+  if (!n) return std::nullopt;
+  return sum / static_cast<double>(n) / std::sqrt(2.0);
+}
+
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,
                              const TemporalFrame& before, const std::vector<int>& ages_before,
                              bool cut, int settled) {

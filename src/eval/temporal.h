@@ -7,6 +7,7 @@
 // disoccluded; self-occlusion within one object is not detected (a documented limit).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -51,6 +52,16 @@ std::vector<float> excess_change_map(const std::vector<int>& previous, const Tem
                                      const TemporalFrame& before, const RgbaImageF& technique_now,
                                      const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                      const RgbaImageF& truth_before, ChangeTotals* totals = nullptr);
+
+// The part of the truth's change between two frames that is its own sampling noise, from two
+// truths of each frame with independent seeds (a, b): on the pixels excess_change measures, the
+// two changes differ by the difference of the two noises' changes, so the mean over RGB of
+// |change_a - change_b| / sqrt(2) (exact for Gaussian noise) estimates the noise's mean change.
+// With a per-pixel seed the noise is fixed to the screen, so it changes between frames only as
+// far as what a pixel sees moves. None when no pixel is measured.
+std::optional<double> noise_in_change(const std::vector<int>& previous, const TemporalFrame& now,
+                                      const TemporalFrame& before, const RgbaImageF& a_now, const RgbaImageF& a_before,
+                                      const RgbaImageF& b_now, const RgbaImageF& b_before);
 
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.

@@ -10,8 +10,8 @@ seq() { "$SSRLAB" sequence --size 96x54 --set reference.samples=8 "$@"; }
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/a.json" \
   --plot "$tmp/a.svg" --out "$tmp/frames" > "$tmp/a.txt"
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/b.json" > /dev/null
-seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > /dev/null
-seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > /dev/null
+seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > "$tmp/still.txt"
+seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > "$tmp/every.txt"
 seq --scene cornell --frames 5 --truth-every 3 --techniques linear --json "$tmp/every3.json" > /dev/null
 seq --scene cornell --path still --frames 2 --techniques stochastic,hiz --sweep stochastic.temporal=false,true \
   --sweep hiz.denoise=false,true --json "$tmp/sweep.json" > /dev/null
@@ -59,6 +59,23 @@ for s in still["summary"]:
 # --truth-every 2: truth at frames 0, 1 (a pair), 2, 3.
 every = json.load(open(f"{tmp}/every.json"))
 assert [f["truth"] for f in every["frames"]] == [True, True, True, True]
+# The truth's own noise on the first pair (96x54, 8 samples, llvmpipe): cornell's dolly changes
+# the truth by 0.00337 a pixel, 0.00276 of it noise (the noise is fixed to the screen; the pixels
+# that reproject to another pixel draw new samples); gallery's cut path 0.02874 and 0.00022 (its
+# rough pixels are few); a still camera on corridor, where nothing moves, 0 and 0.
+def noise_of(j):
+    n = j["truth_noise"]
+    assert set(n) == {"psnr", "psnr_traceable", "first_pair_change_mean", "first_pair_noise_change_mean"}, n
+    return n["first_pair_noise_change_mean"], n["first_pair_change_mean"]
+noise, change = noise_of(every)
+assert 0.5 * change < noise < 2 * change and change > 0.001, (noise, change)
+noise, change = noise_of(a)
+assert noise < 0.05 * change, (noise, change)
+assert noise_of(still) == (0, 0), still["truth_noise"]
+for name, flagged in (("every", True), ("a", False), ("still", False)):
+    text = open(f"{tmp}/{name}.txt").read()
+    assert "truth noise: from frame 0 to 1" in text, text
+    assert ("the truth's change is mostly noise" in text) == flagged, (name, text)
 # --truth-every 3: truth at frames 0, 1, 3, 4; convergence has one entry each and names its frame.
 every3 = json.load(open(f"{tmp}/every3.json"))
 assert [f["index"] for f in every3["frames"] if f["truth"]] == [0, 1, 3, 4]

@@ -1,6 +1,9 @@
 // The temporal metrics' CPU parts: reprojection, flicker beyond the truth's, history ages.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
 #include "eval/temporal.h"
 
 using namespace ssr;
@@ -77,6 +80,37 @@ TEST(Temporal, ChangeTotalsCompareTheTechniquesChangeWithTheTruths) {
   EXPECT_NEAR(c.technique / c.pixels, 0.3, 1e-5);
   EXPECT_NEAR(c.truth / c.pixels, 0.1, 1e-5);
   EXPECT_NEAR(c.technique / c.truth, 3.0, 1e-4);
+}
+
+TEST(Temporal, NoiseInChangeIsTheNoisesPartOfTheTruthsChange) {
+  // The scene brightens by 0.1 from one frame to the next; two truths carry independent Gaussian
+  // noise (sigma 0.02 a channel) that changes every frame. The noise's own mean change is
+  // E|n1 - n0| = sigma * sqrt(2) * sqrt(2 / pi) = 0.0319; the scene's change cancels out.
+  const int w = 64, h = 64;
+  const TemporalFrame a = frame(w, h, {0, 0}), b = frame(w, h, {0, 0});
+  const std::vector<int> q = reproject(b, a);
+  std::mt19937 rng(7);
+  std::normal_distribution<float> noise(0.0f, 0.02f);
+  auto noisy = [&](float v) {
+    RgbaImageF im = image(w, h, v);
+    for (float& p : im.pixels) p += noise(rng);
+    return im;
+  };
+  const RgbaImageF a0 = noisy(0.5f), a1 = noisy(0.6f), b0 = noisy(0.5f), b1 = noisy(0.6f);
+  const std::optional<double> n = noise_in_change(q, b, a, a1, a0, b1, b0);
+  ASSERT_TRUE(n);
+  EXPECT_NEAR(*n, 0.02 * 2.0 / std::sqrt(3.14159265), 0.0015);
+  // Noise fixed in time (the same pattern in both frames of each truth): none of the change.
+  EXPECT_NEAR(*noise_in_change(q, b, a, image(w, h, 0.6f), image(w, h, 0.5f), image(w, h, 0.6f), image(w, h, 0.5f)),
+              0.0, 1e-6);
+  RgbaImageF a1_fixed = a0, b1_fixed = b0;
+  for (float& p : a1_fixed.pixels) p += 0.1f;
+  for (float& p : b1_fixed.pixels) p += 0.1f;
+  EXPECT_NEAR(*noise_in_change(q, b, a, a1_fixed, a0, b1_fixed, b0), 0.0, 1e-5);
+  // Nothing measured: no figure.
+  TemporalFrame dark = b;
+  dark.reflective.assign(dark.reflective.size(), false);
+  EXPECT_FALSE(noise_in_change(q, dark, a, a1, a0, b1, b0));
 }
 
 TEST(Temporal, AgesGrowAndRestart) {
