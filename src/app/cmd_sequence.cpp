@@ -54,6 +54,7 @@ struct SequenceOptions {
   std::vector<std::string> sweeps;
   std::string size = "320x180";
   int truth_every = 1;
+  bool second_truth = false;
   float fps = 30.0f;
   FrameOptions frame;  // --exposure, --reflective-f0
   std::string json, out, video, plot;
@@ -100,7 +101,7 @@ int run_sequence_command(const SequenceOptions& o) {
         throw InputError(std::string(option) + " and --out name the same path '" + file + "'.");
   }
   Scene scene = load_scene(o.scene);
-  SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps};
+  SequenceSpec spec{o.path, o.frames, o.truth_every, o.fps, o.second_truth};
   sequence_path(scene, o.path);  // an unknown path is an error before any work
   const std::vector<std::string> names = technique_names(o.techniques);
   const std::vector<Variant> variants = build_variants(names, o.sets, o.sweeps, o.presets);
@@ -190,6 +191,8 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--size", o->size, "Image size: WIDTHxHEIGHT or " + size_names() + ".")->capture_default_str();
   c->add_option("--truth-every", o->truth_every,
                 "Truth at frames 0, K, 2K, ... and the frame after each (flicker needs pairs).")->capture_default_str();
+  c->add_flag("--second-truth", o->second_truth,
+              "Render each truth twice (another seed) for flicker's ratio without the truth's noise.");
   c->add_option("--fps", o->fps, "Frames per second of scene time, in [0.01, 1000].")->capture_default_str();
   add_frame_options(c, &o->frame);
   c->add_option("--json", o->json, "Results JSON (README: sequence JSON).")->required();

@@ -91,6 +91,7 @@ struct TechniqueRun {
   std::vector<std::pair<std::string, std::vector<float>>> region_excess;  // the same by region
   GhostSums ghost;
   ChangeTotals change;          // technique and truth change over every pair
+  ChangeMoments moments;        // the same pairs against two truths (SequenceSpec::second_truth)
 };
 
 }  // namespace
@@ -107,6 +108,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   out.height = renderer.height();
   out.fps = spec.fps;
   out.truth_every = spec.truth_every;
+  out.second_truth = spec.second_truth;
   out.reference_params = param_list(reference);
   out.frame_settings = param_list(frame_settings_params(renderer.settings));
 
@@ -122,7 +124,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
   TemporalFrame before;
   std::vector<int> ages;
   RgbaImageF truth_reflected_before;
-  RgbaImageF other_truth_before;  // frame 0's truth under another seed (truth_noise)
+  RgbaImageF other_truth_before;  // the last truth frame's second truth (another seed), if rendered
   bool truth_before = false;
   float time_before = 0;
   for (int i = 0; i < spec.frames; ++i) {
@@ -139,17 +141,23 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
     std::optional<ScoredFrame> scored;
     if (truth) scored.emplace(renderer, request, reference);
     const bool pair = truth && truth_before && i > 0 && !cut;
-    // Before any technique: these run the truth again with another seed.
-    if (i == 0) {
-      out.truth_noise = scored->truth_noise();
-      if (const RgbaImageF* other = scored->other_truth_reflected()) other_truth_before = *other;
-    } else if (i == 1 && pair && !other_truth_before.pixels.empty()) {
-      const RgbaImageF& a = scored->truth_reflected();
-      out.first_pair_noise_change = noise_in_change(previous, now, before, a, truth_reflected_before,
-                                                    *scored->other_truth_reflected(), other_truth_before);
-      const ChangeTotals t = change_totals(previous, now, before, a, truth_reflected_before, a, truth_reflected_before);
+    // Before any technique, as they render the truth again with another seed: the truth's noise
+    // on frame 0 and in the first pair's change, and with second_truth on every truth frame
+    // (null where the truth samples nothing).
+    if (i == 0) out.truth_noise = scored->truth_noise();
+    const RgbaImageF* other = truth && (i <= 1 || spec.second_truth) ? scored->other_truth_reflected() : nullptr;
+    const RgbaImageF& truth_now = truth ? scored->truth_reflected() : truth_reflected_before;
+    if (i == 1 && pair && other && !other_truth_before.pixels.empty()) {
+      out.first_pair_noise_change = noise_in_change(previous, now, before, truth_now, truth_reflected_before, *other,
+                                                    other_truth_before);
+      const ChangeTotals t =
+          change_totals(previous, now, before, truth_now, truth_reflected_before, truth_now, truth_reflected_before);
       if (t.pixels) out.first_pair_truth_change = t.truth / static_cast<double>(t.pixels);
     }
+    // The second truth of both frames, or of neither (a truth that samples nothing: itself).
+    const bool second_pair = spec.second_truth && pair && (other != nullptr) == !other_truth_before.pixels.empty();
+    const RgbaImageF& other_now = other ? *other : truth_now;
+    const RgbaImageF& other_before = other ? other_truth_before : truth_reflected_before;
     const std::vector<bool> moving =
         pair ? moved_reflections(previous, scored->truth_reflected(), truth_reflected_before) : std::vector<bool>();
 
@@ -189,6 +197,9 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           const std::vector<float> map = excess_change_map(previous, now, before, s.reflected, run.reflected_before,
                                                            scored->truth_reflected(), truth_reflected_before,
                                                            &run.change);
+          if (second_pair)
+            add_change_moments(previous, now, before, s.reflected, run.reflected_before, truth_now,
+                               truth_reflected_before, other_now, other_before, run.moments);
           double sum = 0;
           std::size_t n = 0;
           for (float e : map)
@@ -219,7 +230,10 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
       on_frame(images);
     }
     out.frames.push_back(std::move(frame));
-    if (truth) truth_reflected_before = scored->truth_reflected();
+    if (truth) {
+      truth_reflected_before = scored->truth_reflected();
+      other_truth_before = other ? *other : RgbaImageF{};
+    }
     truth_before = truth;
     before = now;
     time_before = t;
@@ -259,6 +273,7 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
       s.truth_change_mean = run.change.truth / n;
       if (run.change.truth > 0) s.change_ratio = run.change.technique / run.change.truth;
     }
+    if (spec.second_truth) s.noise_free_change_ratio = noise_free_change_ratio(run.moments);
     s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
     s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
     s.disoccluded_pixels = run.ghost.recent_px;
@@ -304,7 +319,8 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                        {"ran_params", params_json(s.ran_params)},
                        {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
                                        {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
-                                       {"change_ratio", optional_json(s.change_ratio)}}},
+                                       {"change_ratio", optional_json(s.change_ratio)},
+                                       {"noise_free_change_ratio", optional_json(s.noise_free_change_ratio)}}},
                        {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels},
                                      {"moving_psnr", optional_json(s.moving_psnr)}, {"moving_pixels", s.moving_pixels}}},
                        {"convergence", convergence},
@@ -324,6 +340,7 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
           {"height", r.height},
           {"fps", r.fps},
           {"truth_every", r.truth_every},
+          {"second_truth", r.second_truth},
           {"reference", params_json(r.reference_params)},
           {"truth_noise", truth_noise},
           {"frame", params_json(r.frame_settings)},
@@ -347,18 +364,25 @@ std::string sequence_table(const SequenceResults& r) {
     rows.push_back({s.label, num(n ? std::optional<double>(sum / n) : std::nullopt, "%.2f dB"), num(s.instability_mean, "%.5f"),
                     num(s.instability_p95, "%.5f"), num(s.change_ratio, "%.2f"), num(s.disoccluded_psnr, "%.2f dB"),
                     num(s.elsewhere_psnr, "%.2f dB"), num(s.moving_psnr, "%.2f dB")});
+    if (r.second_truth) rows.back().insert(rows.back().begin() + 5, num(s.noise_free_change_ratio, "%.2f"));
   }
-  std::string out = format_table({"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR",
-                                  "elsewhere", "moving refl."},
-                                 rows);
+  std::vector<std::string> header{"technique", "mean PSNR", "flicker mean", "flicker p95", "x truth", "disocc. PSNR",
+                                  "elsewhere", "moving refl."};
+  if (r.second_truth) header.insert(header.begin() + 5, "x truth, no noise");
+  std::string out = format_table(header, rows);
+  if (r.second_truth)
+    out += "x truth, no noise: the technique's root-mean-square change over the truth's without its noise (two "
+           "truths of every truth frame).\n";
   if (!r.first_pair_noise_change || !r.first_pair_truth_change) return out;
   const double noise = *r.first_pair_noise_change, change = *r.first_pair_truth_change;
   out += "truth noise: from frame 0 to 1 the truth changes by " + num(change, "%.5f") +
          " a pixel; its noise alone would change it by " + num(noise, "%.5f") +
          " (a second truth with another seed; noise floor " + db_text(r.truth_noise->psnr) + " dB).\n";
   if (noise > 0 && noise >= 0.5 * change)
-    out += "the truth's change is mostly noise: flicker up to that size is not seen and 'x truth' flatters every "
-           "technique (raise reference.samples).\n";
+    out += r.second_truth ? "the truth's change is mostly noise: flicker up to that size is not seen and 'x truth' "
+                            "flatters every technique; 'x truth, no noise' does not.\n"
+                          : "the truth's change is mostly noise: flicker up to that size is not seen and 'x truth' "
+                            "flatters every technique (raise reference.samples, or --second-truth).\n";
   return out;
 }
 

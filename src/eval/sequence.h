@@ -19,6 +19,9 @@ struct SequenceSpec {
   int frames = 1;
   int truth_every = 1;   // truth at frames 0, K, 2K, ... and the frame after each (flicker pairs)
   float fps = 30.0f;     // frame i is at time i / fps
+  // Every truth frame rendered a second time with another seed, for the flicker ratio without
+  // the truth's noise (SequenceSummary::noise_free_change_ratio).
+  bool second_truth = false;
 };
 
 // A built-in path every scene has: the default camera standing still (convergence).
@@ -55,6 +58,9 @@ struct SequenceSummary {
   // Mean change per pixel between frame pairs of the technique and of the truth (same pixels),
   // and their ratio: the technique moves `change_ratio` times as much as the scene does.
   std::optional<double> change_mean, truth_change_mean, change_ratio;
+  // With SequenceSpec::second_truth: the technique's root-mean-square change over the truth's
+  // without its noise (temporal.h noise_free_change_ratio), on the same pixels.
+  std::optional<double> noise_free_change_ratio;
   std::optional<double> disoccluded_psnr, elsewhere_psnr;   // final image vs truth
   std::size_t disoccluded_pixels = 0;
   // The part of `elsewhere` whose true reflection moved since the truth frame before (trails).
@@ -70,6 +76,7 @@ struct SequenceResults {
   int width = 0, height = 0;
   float fps = 0;
   int truth_every = 1;
+  bool second_truth = false;
   std::vector<std::pair<std::string, std::string>> reference_params;  // the truth's (reference.*)
   std::vector<std::pair<std::string, std::string>> frame_settings;    // frame.exposure, frame.reflective_f0
   // The truth's own noise (ScoredFrame::truth_noise) on frame 0, and on the pair of frames 0 and 1

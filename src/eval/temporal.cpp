@@ -95,6 +95,32 @@ std::optional<double> noise_in_change(const std::vector<int>& previous, const Te
   return sum / static_cast<double>(n) / std::sqrt(2.0);
 }
 
+void add_change_moments(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
+                        const RgbaImageF& technique_now, const RgbaImageF& technique_before, const RgbaImageF& a_now,
+                        const RgbaImageF& a_before, const RgbaImageF& b_now, const RgbaImageF& b_before,
+                        ChangeMoments& m) {
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0 || !now.reflective[i]) continue;
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (!before.reflective[j]) continue;
+    double square = 0, product = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double t = technique_now.pixels[i * 4 + c] - technique_before.pixels[j * 4 + c];
+      square += std::isfinite(t) ? t * t : 1.0;
+      product += static_cast<double>(a_now.pixels[i * 4 + c] - a_before.pixels[j * 4 + c]) *
+                 (b_now.pixels[i * 4 + c] - b_before.pixels[j * 4 + c]);
+    }
+    m.technique_square += square / 3.0;
+    m.truth_product += product / 3.0;
+    ++m.pixels;
+  }
+}
+
+std::optional<double> noise_free_change_ratio(const ChangeMoments& m) {
+  if (!m.pixels || !(m.truth_product > 0)) return std::nullopt;
+  return std::sqrt(m.technique_square / m.truth_product);
+}
+
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,
                              const TemporalFrame& before, const std::vector<int>& ages_before,
                              bool cut, int settled) {

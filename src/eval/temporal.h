@@ -63,6 +63,24 @@ std::optional<double> noise_in_change(const std::vector<int>& previous, const Te
                                       const TemporalFrame& before, const RgbaImageF& a_now, const RgbaImageF& a_before,
                                       const RgbaImageF& b_now, const RgbaImageF& b_before);
 
+// Second moments of the changes between two frames on the pixels excess_change measures, from the
+// technique and two truths with independent seeds (a, b; pass a twice where the truth samples
+// nothing). The two truths' noises are independent, so change_a * change_b averages to the
+// square of the truth's change without its noise (unbiased; its mean may come out negative where
+// the truth hardly moves). Each term is the mean over RGB; a non-finite technique change counts 1.
+struct ChangeMoments {
+  double technique_square = 0;  // sum of the technique's squared change
+  double truth_product = 0;     // sum of change_a * change_b
+  std::size_t pixels = 0;
+};
+void add_change_moments(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before,
+                        const RgbaImageF& technique_now, const RgbaImageF& technique_before, const RgbaImageF& a_now,
+                        const RgbaImageF& a_before, const RgbaImageF& b_now, const RgbaImageF& b_before,
+                        ChangeMoments& m);
+// The technique's root-mean-square change over the noise-free truth's: "x truth" without the
+// truth's noise. None where nothing was measured or the truth's own change is not positive.
+std::optional<double> noise_free_change_ratio(const ChangeMoments& m);
+
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,

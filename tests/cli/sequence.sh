@@ -10,8 +10,9 @@ seq() { "$SSRLAB" sequence --size 96x54 --set reference.samples=8 "$@"; }
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/a.json" \
   --plot "$tmp/a.svg" --out "$tmp/frames" > "$tmp/a.txt"
 seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --json "$tmp/b.json" > /dev/null
-seq --scene corridor --path still --frames 3 --techniques linear,dda --json "$tmp/still.json" > "$tmp/still.txt"
+seq --scene corridor --path still --frames 3 --techniques linear,dda --second-truth --json "$tmp/still.json" > "$tmp/still.txt"
 seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > "$tmp/every.txt"
+seq --scene cornell --frames 4 --truth-every 2 --techniques linear,hiz --second-truth --json "$tmp/second.json" > "$tmp/second.txt"
 seq --scene cornell --frames 5 --truth-every 3 --techniques linear --json "$tmp/every3.json" > /dev/null
 seq --scene cornell --path still --frames 2 --techniques stochastic,hiz --sweep stochastic.temporal=false,true \
   --sweep hiz.denoise=false,true --json "$tmp/sweep.json" > /dev/null
@@ -76,6 +77,17 @@ for name, flagged in (("every", True), ("a", False), ("still", False)):
     text = open(f"{tmp}/{name}.txt").read()
     assert "truth noise: from frame 0 to 1" in text, text
     assert ("the truth's change is mostly noise" in text) == flagged, (name, text)
+# --second-truth: "x truth" without the truth's noise (root-mean-square). On cornell's dolly
+# (96x54, 8 samples, llvmpipe) the noisy truth flatters: linear 2.71 -> 4.23, hiz 2.03 -> 3.58.
+second = json.load(open(f"{tmp}/second.json"))
+assert second["second_truth"] and not every["second_truth"], (second["second_truth"], every["second_truth"])
+assert all(s["instability"]["noise_free_change_ratio"] is None for s in every["summary"]), every["summary"]
+for s in second["summary"]:
+    i = s["instability"]
+    assert i["noise_free_change_ratio"] > 1.3 * i["change_ratio"], (s["label"], i)
+assert "x truth, no noise" in open(f"{tmp}/second.txt").read() and "x truth, no noise" not in open(f"{tmp}/every.txt").read()
+# A truth that does not move has no ratio to give (and the techniques do not move either).
+assert all(s["instability"]["noise_free_change_ratio"] is None for s in still["summary"]), still["summary"]
 # --truth-every 3: truth at frames 0, 1, 3, 4; convergence has one entry each and names its frame.
 every3 = json.load(open(f"{tmp}/every3.json"))
 assert [f["index"] for f in every3["frames"] if f["truth"]] == [0, 1, 3, 4]

@@ -113,6 +113,38 @@ TEST(Temporal, NoiseInChangeIsTheNoisesPartOfTheTruthsChange) {
   EXPECT_FALSE(noise_in_change(q, dark, a, a1, a0, b1, b0));
 }
 
+TEST(Temporal, NoiseFreeChangeRatioSeesThroughTheTruthsNoise) {
+  // The scene brightens by 0.1; each truth's noise (sigma 0.05 a channel) is drawn anew every
+  // frame, so a truth's change carries noise of variance 2 * 0.05^2 = 0.005 besides the scene's
+  // 0.01. The technique changes by 0.2: twice the scene's change.
+  const int w = 64, h = 64;
+  const TemporalFrame a = frame(w, h, {0, 0}), b = frame(w, h, {0, 0});
+  const std::vector<int> q = reproject(b, a);
+  std::mt19937 rng(11);
+  std::normal_distribution<float> noise(0.0f, 0.05f);
+  auto noisy = [&](float v) {
+    RgbaImageF im = image(w, h, v);
+    for (float& p : im.pixels) p += noise(rng);
+    return im;
+  };
+  const RgbaImageF a0 = noisy(0.5f), a1 = noisy(0.6f), b0 = noisy(0.5f), b1 = noisy(0.6f);
+  const RgbaImageF t0 = image(w, h, 0.1f), t1 = image(w, h, 0.3f);
+  ChangeMoments two;
+  add_change_moments(q, b, a, t1, t0, a1, a0, b1, b0, two);
+  ASSERT_EQ(two.pixels, static_cast<std::size_t>(w * h));
+  EXPECT_NEAR(two.technique_square / two.pixels, 0.04, 1e-6);
+  EXPECT_NEAR(two.truth_product / two.pixels, 0.01, 4e-4);
+  EXPECT_NEAR(*noise_free_change_ratio(two), 2.0, 0.05);
+  // One truth twice: its noise counts as the scene's change (0.015), and the ratio flatters.
+  ChangeMoments one;
+  add_change_moments(q, b, a, t1, t0, a1, a0, a1, a0, one);
+  EXPECT_NEAR(*noise_free_change_ratio(one), std::sqrt(0.04 / 0.015), 0.05);
+  // A truth that does not change: no ratio.
+  ChangeMoments still;
+  add_change_moments(q, b, a, t1, t0, image(w, h, 0.5f), image(w, h, 0.5f), image(w, h, 0.5f), image(w, h, 0.5f), still);
+  EXPECT_FALSE(noise_free_change_ratio(still));
+}
+
 TEST(Temporal, AgesGrowAndRestart) {
   const TemporalFrame a = frame(4, 2, {0, 0});
   TemporalFrame b = a;
