@@ -57,18 +57,32 @@ def stages(directory):
 
 
 def paths(directory):
-    print("\n| scene:path | technique | PSNR (final) | flicker mean | flicker p95 | change x truth | disoccluded PSNR | elsewhere |")
-    print("|---|---|---|---|---|---|---|---|")
-    for path in sorted(glob.glob(os.path.join(directory, "paths-*.json"))):
-        d = json.load(open(path))
+    files = sorted(glob.glob(os.path.join(directory, "paths-*.json")))
+    runs = [json.load(open(path)) for path in files]
+    # With `sequence --second-truth`: x truth without the truth's noise, and each path's first
+    # pair's truth change with its noise part.
+    second = any(d.get("second_truth") for d in runs)
+    print("\n| scene:path | technique | PSNR (final) | flicker mean | flicker p95 | change x truth | " +
+          ("x truth, no noise | " if second else "") + "disoccluded PSNR | elsewhere |")
+    print("|---|---|---|---|---|---|---|---|" + ("---|" if second else ""))
+    for d in runs:
         for s in d["summary"]:
             conv = [c for c in s["convergence"] if c is not None]
             mean = sum(conv) / len(conv) if conv else None
             g = s["ghosting"]
             ratio = s["instability"].get("change_ratio")  # absent before revision 2026-11-27 (third session)
+            noise_free = f"{fmt(s['instability'].get('noise_free_change_ratio'))} | " if second else ""
             print(f"| {d['scene']}:{d['path']} | {s['label']} | {fmt(mean)} | {fmt(s['instability']['mean'], 4)} | "
-                  f"{fmt(s['instability']['p95'], 4)} | {fmt(ratio)} | {fmt(g['disoccluded_psnr'])} | "
+                  f"{fmt(s['instability']['p95'], 4)} | {fmt(ratio)} | {noise_free}{fmt(g['disoccluded_psnr'])} | "
                   f"{fmt(g['elsewhere_psnr'])} |")
+    noisy = [d for d in runs if d.get("truth_noise") and d["truth_noise"].get("first_pair_change_mean") is not None]
+    if noisy:
+        print("\n| scene:path | truth change, frames 0 to 1 | its noise's part | truth noise floor dB |")
+        print("|---|---|---|---|")
+        for d in noisy:
+            n = d["truth_noise"]
+            print(f"| {d['scene']}:{d['path']} | {fmt(n['first_pair_change_mean'], 4)} | "
+                  f"{fmt(n['first_pair_noise_change_mean'], 4)} | {fmt(n['psnr'])} |")
 
 
 def bench(files):
