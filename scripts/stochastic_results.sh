@@ -3,7 +3,8 @@
 # the GPU machine (ssrlab on PATH, e.g. .gpu/run's):
 #   scripts/stochastic_results.sh OUTDIR stages|paths|bench [ssrlab options...]
 # Options after the part go to every ssrlab call (e.g. --set reference.samples=2048); ONLY=SCENE
-# runs the stages and paths of that scene alone (e.g. ONLY=cornell).
+# runs the stages and paths of that scene alone (e.g. ONLY=cornell); PATHS="scene:path ..." runs
+# other paths than the four.
 # stages: each denoiser stage on and off (8 combinations) and hiz with 16 rays, still camera,
 #         16 frames with the truth on every one: error per stage, per roughness band, per frame.
 # paths:  stochastic, hiz and hiz + denoiser along camera paths: instability and ghosting.
@@ -24,7 +25,7 @@ case "$what" in
         --json "$out/stages-$name.json" > "$out/stages-$name.txt"
     done ;;
   paths)
-    for spec in cornell:dolly corridor:dolly gallery:orbit ramp:dolly; do
+    for spec in ${PATHS:-cornell:dolly corridor:dolly gallery:orbit ramp:dolly}; do
       scene=${spec%%:*}; path=${spec##*:}
       [ -z "$only" ] || [ "$scene" = "$only" ] || continue
       ssrlab sequence --scene "$scene" --path "$path" --frames 64 --size $size --truth-every 4 \
