@@ -25,6 +25,23 @@ RgbaImageF image(int w, int h, float v) {
   return RgbaImageF{w, h, std::vector<float>(static_cast<std::size_t>(w) * h * 4, v)};
 }
 
+// Two truths (a, b) of two frames, 64x64, where the scene goes from 0.5 to 0.6 and each truth
+// carries Gaussian noise of `sigma` a channel, drawn anew for every image.
+struct NoisyTruths {
+  static constexpr int w = 64, h = 64;
+  RgbaImageF a0, a1, b0, b1;
+  explicit NoisyTruths(float sigma, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> noise(0.0f, sigma);
+    auto noisy = [&](float v) {
+      RgbaImageF im = image(w, h, v);
+      for (float& p : im.pixels) p += noise(rng);
+      return im;
+    };
+    a0 = noisy(0.5f), a1 = noisy(0.6f), b0 = noisy(0.5f), b1 = noisy(0.6f);
+  }
+};
+
 }  // namespace
 
 TEST(Temporal, StillFrameReprojectsToItself) {
@@ -86,17 +103,10 @@ TEST(Temporal, NoiseInChangeIsTheNoisesPartOfTheTruthsChange) {
   // The scene brightens by 0.1 from one frame to the next; two truths carry independent Gaussian
   // noise (sigma 0.02 a channel) that changes every frame. The noise's own mean change is
   // E|n1 - n0| = sigma * sqrt(2) * sqrt(2 / pi) = 0.0319; the scene's change cancels out.
-  const int w = 64, h = 64;
+  const int w = NoisyTruths::w, h = NoisyTruths::h;
   const TemporalFrame a = frame(w, h, {0, 0}), b = frame(w, h, {0, 0});
   const std::vector<int> q = reproject(b, a);
-  std::mt19937 rng(7);
-  std::normal_distribution<float> noise(0.0f, 0.02f);
-  auto noisy = [&](float v) {
-    RgbaImageF im = image(w, h, v);
-    for (float& p : im.pixels) p += noise(rng);
-    return im;
-  };
-  const RgbaImageF a0 = noisy(0.5f), a1 = noisy(0.6f), b0 = noisy(0.5f), b1 = noisy(0.6f);
+  const auto [a0, a1, b0, b1] = NoisyTruths(0.02f, 7);
   const std::optional<double> n = noise_in_change(q, b, a, a1, a0, b1, b0);
   ASSERT_TRUE(n);
   EXPECT_NEAR(*n, 0.02 * 2.0 / std::sqrt(3.14159265), 0.0015);
@@ -117,17 +127,10 @@ TEST(Temporal, NoiseFreeChangeRatioSeesThroughTheTruthsNoise) {
   // The scene brightens by 0.1; each truth's noise (sigma 0.05 a channel) is drawn anew every
   // frame, so a truth's change carries noise of variance 2 * 0.05^2 = 0.005 besides the scene's
   // 0.01. The technique changes by 0.2: twice the scene's change.
-  const int w = 64, h = 64;
+  const int w = NoisyTruths::w, h = NoisyTruths::h;
   const TemporalFrame a = frame(w, h, {0, 0}), b = frame(w, h, {0, 0});
   const std::vector<int> q = reproject(b, a);
-  std::mt19937 rng(11);
-  std::normal_distribution<float> noise(0.0f, 0.05f);
-  auto noisy = [&](float v) {
-    RgbaImageF im = image(w, h, v);
-    for (float& p : im.pixels) p += noise(rng);
-    return im;
-  };
-  const RgbaImageF a0 = noisy(0.5f), a1 = noisy(0.6f), b0 = noisy(0.5f), b1 = noisy(0.6f);
+  const auto [a0, a1, b0, b1] = NoisyTruths(0.05f, 11);
   const RgbaImageF t0 = image(w, h, 0.1f), t1 = image(w, h, 0.3f);
   ChangeMoments two;
   add_change_moments(q, b, a, t1, t0, a1, a0, b1, b0, two);
