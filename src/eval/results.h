@@ -115,10 +115,10 @@ std::string db_text(const std::optional<double>& v);
 nlohmann::json device_json(const DeviceInfo& d);
 // The "error" object of one result (pooled figures).
 nlohmann::json error_json(const ErrorMetrics& e);
-// The "telemetry" object of one result: {"rays", "iterations": {mean, p50, p95, max},
-// "idle_lanes"}; null without telemetry.
 // {"psnr", "psnr_traceable"}, or null where the truth samples nothing.
 nlohmann::json truth_noise_json(const std::optional<TruthNoise>& n);
+// The "telemetry" object of one result: {"rays", "iterations": {mean, p50, p95, max},
+// "idle_lanes"}; null without telemetry.
 nlohmann::json telemetry_json(const std::optional<IterationStats>& t);
 // The "regions" object of one result (README: results JSON).
 nlohmann::json breakdown_json(const Breakdown& b);
