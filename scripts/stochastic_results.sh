@@ -7,7 +7,9 @@
 # other paths than the four.
 # stages: each denoiser stage on and off (8 combinations) and hiz with 16 rays, still camera,
 #         16 frames with the truth on every one: error per stage, per roughness band, per frame.
-# paths:  stochastic, hiz and hiz + denoiser along camera paths: instability and ghosting.
+# paths:  stochastic, hiz and hiz + denoiser along camera paths: instability and ghosting, with
+#         --second-truth (x truth without the truth's noise: cornell's and ramp's truths change
+#         mostly by their noise).
 # bench:  time per pass at 1080p and 4K, full and half resolution, the quality tiers.
 set -eu
 out=$1; what=$2; shift 2
@@ -29,7 +31,7 @@ case "$what" in
       scene=${spec%%:*}; path=${spec##*:}
       [ -z "$only" ] || [ "$scene" = "$only" ] || continue
       ssrlab sequence --scene "$scene" --path "$path" --frames 64 --size $size --truth-every 4 \
-        --techniques stochastic,hiz --sweep hiz.denoise=false,true "$@" \
+        --techniques stochastic,hiz --sweep hiz.denoise=false,true --second-truth "$@" \
         --json "$out/paths-$scene-$path.json" > "$out/paths-$scene-$path.txt"
     done ;;
   bench)
