@@ -59,6 +59,7 @@ struct SequenceOptions {
   FrameOptions frame;  // --exposure, --reflective-f0
   std::string json, out, video, plot;
   std::string gl = "auto";
+  std::string shader_dir;  // empty: the embedded shaders
 };
 
 // One row a technique: its final image | the truth | |difference| heat map.
@@ -139,9 +140,10 @@ int run_sequence_command(const SequenceOptions& o) {
   } cleanup{frames_tmp};
 
   const FrameSettings settings = frame_settings(o.frame);  // the table's ranges, before any GL
+  const gl::ShaderSource shaders = gl::ShaderSource::from_option(o.shader_dir);
   auto ctx = open_gl(o.gl, {{w, h}});
   const gl::ContextInfo& gi = ctx->info();
-  Renderer renderer(scene, w, h);
+  Renderer renderer(scene, w, h, shaders);
   renderer.settings = settings;
   reference->load(renderer.shaders());
   std::function<void(const SequenceImages&)> on_frame;
@@ -167,7 +169,8 @@ int run_sequence_command(const SequenceOptions& o) {
     cleanup.dir.clear();
   }
   if (!o.plot.empty()) write_text_file_atomic(o.plot, sequence_svg(r));
-  write_text_file_atomic(o.json, sequence_json({gi.renderer, gi.version, clock}, build_revision(), r).dump(2) + "\n");
+  const std::string revision = build_revision() + (o.shader_dir.empty() ? "" : " (shaders from " + o.shader_dir + ")");
+  write_text_file_atomic(o.json, sequence_json({gi.renderer, gi.version, clock}, revision, r).dump(2) + "\n");
   std::printf("scene %s, path %s, %d frames at %.0f fps, %dx%d, truth every %d\n%s", r.scene.c_str(), r.path.c_str(),
               o.frames, o.fps, w, h, o.truth_every, sequence_table(r).c_str());
   for (const SequenceSummary& s : r.summary)
@@ -200,6 +203,8 @@ Command add_sequence_command(CLI::App& app) {
   c->add_option("--video", o->video, "Side-by-side video (.mp4/.mkv; needs ffmpeg).");
   c->add_option("--plot", o->plot, "SVG: PSNR per frame and flicker per frame.");
   c->add_option("--gl", o->gl, "GL path: " + gl::backend_names() + ".")->capture_default_str();
+  c->add_option("--shaders", o->shader_dir,
+                "Load shaders from this directory instead of the embedded copy (to compare a variant's frames).");
   return {c, [o] { return run_sequence_command(*o); }};
 }
 

@@ -94,6 +94,9 @@ cp -r "$(dirname "$0")/../../shaders" "$tmp/broken_shaders"
 echo 'syntax error here' >>"$tmp/broken_shaders/techniques/linear.comp"
 expect_exit 1 render --shaders "$tmp/broken_shaders" --technique linear $S --out "$tmp/out.png"
 grep -q "^$tmp/broken_shaders/techniques/linear.comp:[0-9]*:" "$tmp/stderr" || bad "a compile error does not name the --shaders file"
+# sequence loads them too (--shaders there once parsed and went unused would pass sequence.sh).
+expect_exit 1 sequence --shaders "$tmp/broken_shaders" --techniques linear --frames 1 $S --json "$tmp/seq.json"
+grep -q "^$tmp/broken_shaders/techniques/linear.comp:[0-9]*:" "$tmp/stderr" || bad "sequence does not load --shaders"
 expect_exit 2 compare --techniques "" $S --out "$tmp/out.png"
 expect_exit 2 bench --techniques linear --sizes 32x18 --sweep linear.max_steps=8,16 --frames 1 --warmup 0 \
   --json "$tmp/out.b-sweep-gallery-32x18.svg" --plot "$tmp/out.b.svg"

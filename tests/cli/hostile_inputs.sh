@@ -275,6 +275,7 @@ mkdir -p "$in/dir.svg"; bad "directory" bench --json "$out/b.json" --plot "$in/d
 bad "same file" compare $S --out "$out/x.png" --json "$out/x.png"
 bad "same file" bench --json "$out/b.json" --csv "$out/./b.json"
 bad "shader directory" bench --shaders "$in/no-such-dir" --json "$out/b.json"
+bad "shader directory" sequence --frames 2 --shaders "$in/no-such-dir" --json "$out/s.json"
 # Outputs are checked before any work: a directory that takes no new file (/proc refuses even
 # root), a name longer than the file system allows, an output that is an input.
 bad "cannot create --out" render $S --out /proc/ssrlab-x.png

@@ -13,6 +13,10 @@ seq --scene gallery --path cut --frames 8 --fps 2 --techniques linear,hiz,ppr --
 seq --scene corridor --path still --frames 3 --techniques linear,dda --second-truth --json "$tmp/still.json" > "$tmp/still.txt"
 seq --scene cornell --frames 4 --truth-every 2 --techniques linear --json "$tmp/every.json" > "$tmp/every.txt"
 seq --scene cornell --frames 4 --truth-every 2 --techniques linear,hiz --second-truth --json "$tmp/second.json" > "$tmp/second.txt"
+# --shaders: the checkout's own shaders give the embedded ones' figures, and the JSON says whose.
+seq --scene cornell --frames 3 --techniques stochastic --json "$tmp/embedded.json" > /dev/null
+seq --scene cornell --frames 3 --techniques stochastic --shaders "$(cd "$(dirname "$0")/../../shaders" && pwd)" \
+  --json "$tmp/own_shaders.json" > /dev/null
 seq --scene cornell --frames 5 --truth-every 3 --techniques linear --json "$tmp/every3.json" > /dev/null
 seq --scene cornell --path still --frames 2 --techniques stochastic,hiz --sweep stochastic.temporal=false,true \
   --sweep hiz.denoise=false,true --json "$tmp/sweep.json" > /dev/null
@@ -88,6 +92,9 @@ for s in second["summary"]:
 assert "x truth, no noise" in open(f"{tmp}/second.txt").read() and "x truth, no noise" not in open(f"{tmp}/every.txt").read()
 # A truth that does not move has no ratio to give (and the techniques do not move either).
 assert all(s["instability"]["noise_free_change_ratio"] is None for s in still["summary"]), still["summary"]
+embedded, own = (json.load(open(f"{tmp}/{n}.json")) for n in ("embedded", "own_shaders"))
+assert embedded["summary"] == own["summary"] and embedded["frames"] == own["frames"], "--shaders changed the figures"
+assert "(shaders from " in own["revision"] and "(shaders from " not in embedded["revision"], own["revision"]
 # --truth-every 3: truth at frames 0, 1, 3, 4; convergence has one entry each and names its frame.
 every3 = json.load(open(f"{tmp}/every3.json"))
 assert [f["index"] for f in every3["frames"] if f["truth"]] == [0, 1, 3, 4]
