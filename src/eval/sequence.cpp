@@ -154,10 +154,11 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
           change_totals(previous, now, before, truth_now, truth_reflected_before, truth_now, truth_reflected_before);
       if (t.pixels) out.first_pair_truth_change = t.truth / static_cast<double>(t.pixels);
     }
-    // The second truth of both frames, or of neither (a truth that samples nothing: itself).
-    const bool second_pair = spec.second_truth && pair && (other != nullptr) == !other_truth_before.pixels.empty();
+    // A frame whose truth samples nothing has no second truth: it is deterministic, so its truth
+    // serves as both.
+    const bool second_pair = spec.second_truth && pair;
     const RgbaImageF& other_now = other ? *other : truth_now;
-    const RgbaImageF& other_before = other ? other_truth_before : truth_reflected_before;
+    const RgbaImageF& other_before = other_truth_before.pixels.empty() ? truth_reflected_before : other_truth_before;
     const std::vector<bool> moving =
         pair ? moved_reflections(previous, scored->truth_reflected(), truth_reflected_before) : std::vector<bool>();
 
@@ -273,7 +274,10 @@ SequenceResults run_sequence(Renderer& renderer, const std::vector<Variant>& var
       s.truth_change_mean = run.change.truth / n;
       if (run.change.truth > 0) s.change_ratio = run.change.technique / run.change.truth;
     }
-    if (spec.second_truth) s.noise_free_change_ratio = noise_free_change_ratio(run.moments);
+    if (spec.second_truth) {
+      s.noise_free_change_ratio = noise_free_change_ratio(run.moments);
+      s.rms_change_ratio = rms_change_ratio(run.moments);
+    }
     s.disoccluded_psnr = psnr_of(run.ghost.recent, run.ghost.recent_px);
     s.elsewhere_psnr = psnr_of(run.ghost.elsewhere, run.ghost.elsewhere_px);
     s.disoccluded_pixels = run.ghost.recent_px;
@@ -320,7 +324,8 @@ nlohmann::json sequence_json(const DeviceInfo& device, const std::string& revisi
                        {"instability", {{"mean", optional_json(s.instability_mean)}, {"p95", optional_json(s.instability_p95)}, {"pixels", s.instability_pixels}, {"regions", regions},
                                        {"change_mean", optional_json(s.change_mean)}, {"truth_change_mean", optional_json(s.truth_change_mean)},
                                        {"change_ratio", optional_json(s.change_ratio)},
-                                       {"noise_free_change_ratio", optional_json(s.noise_free_change_ratio)}}},
+                                       {"noise_free_change_ratio", optional_json(s.noise_free_change_ratio)},
+                                       {"rms_change_ratio", optional_json(s.rms_change_ratio)}}},
                        {"ghosting", {{"disoccluded_psnr", optional_json(s.disoccluded_psnr)}, {"elsewhere_psnr", optional_json(s.elsewhere_psnr)}, {"disoccluded_pixels", s.disoccluded_pixels},
                                      {"moving_psnr", optional_json(s.moving_psnr)}, {"moving_pixels", s.moving_pixels}}},
                        {"convergence", convergence},

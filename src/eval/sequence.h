@@ -61,6 +61,9 @@ struct SequenceSummary {
   // With SequenceSpec::second_truth: the technique's root-mean-square change over the truth's
   // without its noise (temporal.h noise_free_change_ratio), on the same pixels.
   std::optional<double> noise_free_change_ratio;
+  // The same against the truth's change with its noise (rms_change_ratio): the step from
+  // change_ratio to this is the norm's, from this to noise_free_change_ratio the noise's.
+  std::optional<double> rms_change_ratio;
   std::optional<double> disoccluded_psnr, elsewhere_psnr;   // final image vs truth
   std::size_t disoccluded_pixels = 0;
   // The part of `elsewhere` whose true reflection moved since the truth frame before (trails).

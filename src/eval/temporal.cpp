@@ -103,14 +103,16 @@ void add_change_moments(const std::vector<int>& previous, const TemporalFrame& n
     if (previous[i] < 0 || !now.reflective[i]) continue;
     const auto j = static_cast<std::size_t>(previous[i]);
     if (!before.reflective[j]) continue;
-    double square = 0, product = 0;
+    double square = 0, truth_square = 0, product = 0;
     for (std::size_t c = 0; c < 3; ++c) {
       const double t = technique_now.pixels[i * 4 + c] - technique_before.pixels[j * 4 + c];
+      const double da = a_now.pixels[i * 4 + c] - a_before.pixels[j * 4 + c];
       square += std::isfinite(t) ? t * t : 1.0;
-      product += static_cast<double>(a_now.pixels[i * 4 + c] - a_before.pixels[j * 4 + c]) *
-                 (b_now.pixels[i * 4 + c] - b_before.pixels[j * 4 + c]);
+      truth_square += da * da;
+      product += da * (b_now.pixels[i * 4 + c] - b_before.pixels[j * 4 + c]);
     }
     m.technique_square += square / 3.0;
+    m.truth_square += truth_square / 3.0;
     m.truth_product += product / 3.0;
     ++m.pixels;
   }
@@ -119,6 +121,11 @@ void add_change_moments(const std::vector<int>& previous, const TemporalFrame& n
 std::optional<double> noise_free_change_ratio(const ChangeMoments& m) {
   if (!m.pixels || !(m.truth_product > 0)) return std::nullopt;
   return std::sqrt(m.technique_square / m.truth_product);
+}
+
+std::optional<double> rms_change_ratio(const ChangeMoments& m) {
+  if (!m.pixels || !(m.truth_square > 0)) return std::nullopt;
+  return std::sqrt(m.technique_square / m.truth_square);
 }
 
 std::vector<int> update_ages(const std::vector<int>& previous, const TemporalFrame& now,

@@ -70,6 +70,7 @@ std::optional<double> noise_in_change(const std::vector<int>& previous, const Te
 // the truth hardly moves). Each term is the mean over RGB; a non-finite technique change counts 1.
 struct ChangeMoments {
   double technique_square = 0;  // sum of the technique's squared change
+  double truth_square = 0;      // sum of change_a squared (noise included)
   double truth_product = 0;     // sum of change_a * change_b
   std::size_t pixels = 0;
 };
@@ -80,6 +81,10 @@ void add_change_moments(const std::vector<int>& previous, const TemporalFrame& n
 // The technique's root-mean-square change over the noise-free truth's: "x truth" without the
 // truth's noise. None where nothing was measured or the truth's own change is not positive.
 std::optional<double> noise_free_change_ratio(const ChangeMoments& m);
+// The same ratio against truth a's change, noise included: beside noise_free_change_ratio it
+// tells the truth's noise (the two differ by it alone) from the change of norm against the
+// mean absolute "x truth".
+std::optional<double> rms_change_ratio(const ChangeMoments& m);
 
 // Frames since each pixel was disoccluded or became reflective (0: this frame). `ages_before`
 // empty (the first frame) starts every pixel at `settled`; a cut restarts every pixel at 0.

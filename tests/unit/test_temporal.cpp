@@ -102,7 +102,7 @@ TEST(Temporal, ChangeTotalsCompareTheTechniquesChangeWithTheTruths) {
 TEST(Temporal, NoiseInChangeIsTheNoisesPartOfTheTruthsChange) {
   // The scene brightens by 0.1 from one frame to the next; two truths carry independent Gaussian
   // noise (sigma 0.02 a channel) that changes every frame. The noise's own mean change is
-  // E|n1 - n0| = sigma * sqrt(2) * sqrt(2 / pi) = 0.0319; the scene's change cancels out.
+  // E|n1 - n0| = sigma * sqrt(2) * sqrt(2 / pi) = 0.0226; the scene's change cancels out.
   const int w = NoisyTruths::w, h = NoisyTruths::h;
   const TemporalFrame a = frame(w, h, {0, 0}), b = frame(w, h, {0, 0});
   const std::vector<int> q = reproject(b, a);
@@ -138,6 +138,9 @@ TEST(Temporal, NoiseFreeChangeRatioSeesThroughTheTruthsNoise) {
   EXPECT_NEAR(two.technique_square / two.pixels, 0.04, 1e-6);
   EXPECT_NEAR(two.truth_product / two.pixels, 0.01, 4e-4);
   EXPECT_NEAR(*noise_free_change_ratio(two), 2.0, 0.05);
+  // Against truth a's change with its noise (0.01 + 0.005): what the noise takes off the ratio.
+  EXPECT_NEAR(two.truth_square / two.pixels, 0.015, 6e-4);
+  EXPECT_NEAR(*rms_change_ratio(two), std::sqrt(0.04 / 0.015), 0.05);
   // One truth twice: its noise counts as the scene's change (0.015), and the ratio flatters.
   ChangeMoments one;
   add_change_moments(q, b, a, t1, t0, a1, a0, a1, a0, one);
