@@ -43,6 +43,17 @@ float change(const RgbaImageF& a, std::size_t i, const RgbaImageF& b, std::size_
   return s / 3.0f;
 }
 
+// Calls f(i, j) for every pixel i of `now` that the change metrics measure: reflective in both
+// frames and seen before, at pixel j of `before`. The one definition of that set.
+template <typename F>
+void for_each_measured(const std::vector<int>& previous, const TemporalFrame& now, const TemporalFrame& before, F f) {
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    if (previous[i] < 0 || !now.reflective[i]) continue;
+    const auto j = static_cast<std::size_t>(previous[i]);
+    if (before.reflective[j]) f(i, j);
+  }
+}
+
 }  // namespace
 
 std::vector<float> excess_change_map(const std::vector<int>& previous, const TemporalFrame& now,
@@ -50,10 +61,7 @@ std::vector<float> excess_change_map(const std::vector<int>& previous, const Tem
                                      const RgbaImageF& technique_before, const RgbaImageF& truth_now,
                                      const RgbaImageF& truth_before, ChangeTotals* totals) {
   std::vector<float> out(previous.size(), -1.0f);
-  for (std::size_t i = 0; i < previous.size(); ++i) {
-    if (previous[i] < 0 || !now.reflective[i]) continue;
-    const auto j = static_cast<std::size_t>(previous[i]);
-    if (!before.reflective[j]) continue;
+  for_each_measured(previous, now, before, [&](std::size_t i, std::size_t j) {
     const float moved = change(technique_now, i, technique_before, j), truth = change(truth_now, i, truth_before, j);
     // A non-finite image is flicker without bound; the metric must not hide it as NaN.
     const float excess = moved - truth;
@@ -63,7 +71,7 @@ std::vector<float> excess_change_map(const std::vector<int>& previous, const Tem
       totals->truth += truth;
       ++totals->pixels;
     }
-  }
+  });
   return out;
 }
 
@@ -80,17 +88,14 @@ std::optional<double> noise_in_change(const std::vector<int>& previous, const Te
                                       const RgbaImageF& b_now, const RgbaImageF& b_before) {
   double sum = 0;
   std::size_t n = 0;
-  for (std::size_t i = 0; i < previous.size(); ++i) {
-    if (previous[i] < 0 || !now.reflective[i]) continue;
-    const auto j = static_cast<std::size_t>(previous[i]);
-    if (!before.reflective[j]) continue;
+  for_each_measured(previous, now, before, [&](std::size_t i, std::size_t j) {
     double d = 0;
     for (std::size_t c = 0; c < 3; ++c)
       d += std::abs((a_now.pixels[i * 4 + c] - a_before.pixels[j * 4 + c]) -
                     (b_now.pixels[i * 4 + c] - b_before.pixels[j * 4 + c]));
     sum += d / 3.0;
     ++n;
-  }
+  });
   if (!n) return std::nullopt;
   return sum / static_cast<double>(n) / std::sqrt(2.0);
 }
@@ -99,10 +104,7 @@ void add_change_moments(const std::vector<int>& previous, const TemporalFrame& n
                         const RgbaImageF& technique_now, const RgbaImageF& technique_before, const RgbaImageF& a_now,
                         const RgbaImageF& a_before, const RgbaImageF& b_now, const RgbaImageF& b_before,
                         ChangeMoments& m) {
-  for (std::size_t i = 0; i < previous.size(); ++i) {
-    if (previous[i] < 0 || !now.reflective[i]) continue;
-    const auto j = static_cast<std::size_t>(previous[i]);
-    if (!before.reflective[j]) continue;
+  for_each_measured(previous, now, before, [&](std::size_t i, std::size_t j) {
     double square = 0, truth_square = 0, product = 0;
     for (std::size_t c = 0; c < 3; ++c) {
       const double t = technique_now.pixels[i * 4 + c] - technique_before.pixels[j * 4 + c];
@@ -115,7 +117,7 @@ void add_change_moments(const std::vector<int>& previous, const TemporalFrame& n
     m.truth_square += truth_square / 3.0;
     m.truth_product += product / 3.0;
     ++m.pixels;
-  }
+  });
 }
 
 std::optional<double> noise_free_change_ratio(const ChangeMoments& m) {
