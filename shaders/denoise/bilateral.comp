@@ -1,7 +1,7 @@
 // Denoiser stage 3, cross-bilateral cleanup (src/techniques/denoiser.h; Diligent's
 // SSR_ComputeBilateralCleanup): a (2r+1)^2 Gaussian whose spatial sigma grows with the pixel's
 // relative noise (sqrt(variance) / luminance, from the earlier stages) and with roughness (none
-// on mirrors), and whose range weights come from the G-buffer, not the noisy colour: depth
+// on mirrors), and is wider where the history is young, and whose range weights come from the G-buffer, not the noisy colour: depth
 // (distance from the pixel's tangent plane), normal and roughness (after SVGF). With the stage
 // off (or r = 0) it only resolves. Writes the technique's reflection: rgb (un-premultiplied),
 // confidence.
@@ -31,8 +31,16 @@ void main() {
   }
   GSample g = gbuffer_fetch(p);
   int r = pass.params.bilateral != 0 ? clamp(pass.params.bilateral_radius, 0, 8) : 0;
-  float noise = clamp(sqrt(texelFetch(stats_tex, p, 0).r) / max(luminance(centre.rgb), 1e-3), 0.0, 1.0);
+  vec2 stats = texelFetch(stats_tex, p, 0).rg;
+  float noise = clamp(sqrt(stats.r) / max(luminance(centre.rgb), 1e-3), 0.0, 1.0);
   float sigma = mix(0.5, max(pass.params.bilateral_sigma, 0.5), noise) * clamp(g.roughness / 0.2, 0.0, 1.0);
+  // A pixel with little history (new on screen, disoccluded, the frames after a cut) shows one or
+  // a few samples that the accumulation has not averaged yet, however sharp its lobe: near
+  // mirrors (corridor's floor, roughness 0.05, whose sigma above is under 0.3) sparkle where they
+  // mirror lights. Its sigma is at least young_sigma / frames, as NRD's history fix blurs young
+  // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (< 0.01, ssr_main.glsl) have no noise.
+  if (pass.params.temporal != 0 && g.roughness >= 0.01)
+    sigma = max(sigma, pass.params.young_sigma / max(stats.g, 1.0));  // stats.g: frames of history
   if (r == 0 || sigma < 0.3) {
     imageStore(out_reflection, p, resolve(centre));
     return;

@@ -20,6 +20,8 @@ struct DenoiseParams {
   int bilateral_radius SSR_DEFAULT(2);      // pixels: a (2r+1)^2 window
   float bilateral_sigma SSR_DEFAULT(2.0f);  // pixels: spatial sigma at full variance
   int firefly SSR_DEFAULT(1);               // stage 1: reused rays weigh 1 / (1 + luminance), less with history
+  float young_sigma SSR_DEFAULT(2.0f);      // stage 3: sigma >= young_sigma / frames of history (sampled lobes)
+  int pad0 SSR_DEFAULT(0), pad1 SSR_DEFAULT(0), pad2 SSR_DEFAULT(0);  // std140: DenoisePass.trace starts at 16 bytes
 };
 
 // What one denoiser stage reads besides its parameters (UBO_PASS).
