@@ -20,6 +20,15 @@ vec4 resolve(vec4 premultiplied) {
   return premultiplied.a > 1e-4 ? vec4(premultiplied.rgb / premultiplied.a, min(premultiplied.a, 1.0)) : vec4(0.0);
 }
 
+// How far a neighbour's normal keeps its reflection inside a GGX lobe of this roughness: the
+// lobe's half vectors spread about alpha = roughness^2 around the normal (taken as at least 0.02
+// rad, the G-buffer's normals being half floats), so a normal turned by angle a weighs
+// exp(-(a / alpha)^2), with a^2 ~ 2 (1 - cos a).
+float lobe_weight(vec3 n_p, vec3 n_q, float roughness) {
+  float width = max(roughness * roughness, 0.02);
+  return exp(-2.0 * max(1.0 - dot(n_p, n_q), 0.0) / (width * width));
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = ivec2(frame.viewport.xy);
@@ -39,8 +48,15 @@ void main() {
   // mirrors (corridor's floor, roughness 0.05, whose sigma above is under 0.3) sparkle where they
   // mirror lights. Its sigma is at least young_sigma / frames, as NRD's history fix blurs young
   // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (< 0.01, ssr_main.glsl) have no noise.
-  if (pass.params.temporal != 0 && g.roughness >= 0.01)
-    sigma = max(sigma, pass.params.young_sigma / max(stats.g, 1.0));  // stats.g: frames of history
+  // Where that widens the blur, a neighbour counts only as far as its normal keeps the
+  // reflection inside this pixel's lobe (young_weight): a flat floor blurs, a chrome sphere's
+  // sharp reflection does not.
+  bool young = false;
+  if (pass.params.temporal != 0 && g.roughness >= 0.01) {
+    float s = pass.params.young_sigma / max(stats.g, 1.0);  // stats.g: frames of history
+    young = s > sigma;
+    sigma = max(sigma, s);
+  }
   if (r == 0 || sigma < 0.3) {
     imageStore(out_reflection, p, resolve(centre));
     return;
@@ -56,6 +72,7 @@ void main() {
       if (!is_reflective(gq)) continue;
       float w = exp(-float(x * x + y * y) * inv_two_sigma2) *
                 geometric_weight(g.pos_vs, g.n_vs, g.roughness, gq.pos_vs, gq.n_vs, gq.roughness);
+      if (young) w *= lobe_weight(g.n_vs, gq.n_vs, g.roughness);
       sum += w * texelFetch(radiance_tex, q, 0);
       weight += w;
     }
