@@ -1,10 +1,10 @@
 // Denoiser stage 3, cross-bilateral cleanup (src/techniques/denoiser.h; Diligent's
 // SSR_ComputeBilateralCleanup): a (2r+1)^2 Gaussian whose spatial sigma grows with the pixel's
 // relative noise (sqrt(variance) / luminance, from the earlier stages) and with roughness (none
-// on mirrors), and is wider where the history is young, and whose range weights come from the G-buffer, not the noisy colour: depth
-// (distance from the pixel's tangent plane), normal and roughness (after SVGF). With the stage
-// off (or r = 0) it only resolves. Writes the technique's reflection: rgb (un-premultiplied),
-// confidence.
+// on mirrors), and is wider where the history is young; its range weights come from the
+// G-buffer, not the noisy colour: depth (distance from the pixel's tangent plane), normal and
+// roughness (after SVGF). With the stage off (or r = 0) it only resolves. Writes the
+// technique's reflection: rgb (un-premultiplied), confidence.
 #include "common/brdf.glsl"
 #include "common/gbuffer.glsl"
 #include "common/denoise_common.glsl"
@@ -22,8 +22,8 @@ vec4 resolve(vec4 premultiplied) {
 
 // How far a neighbour's normal keeps its reflection inside a GGX lobe of this roughness: the
 // lobe's half vectors spread about alpha = roughness^2 around the normal (taken as at least 0.02
-// rad, the G-buffer's normals being half floats), so a normal turned by angle a weighs
-// exp(-(a / alpha)^2), with a^2 ~ 2 (1 - cos a).
+// rad, a chosen floor: flat surfaces blur, a sphere's few degrees a pixel do not), so a normal
+// turned by angle a weighs exp(-(a / alpha)^2), with a^2 ~ 2 (1 - cos a).
 float lobe_weight(vec3 n_p, vec3 n_q, float roughness) {
   float width = max(roughness * roughness, 0.02);
   return exp(-2.0 * max(1.0 - dot(n_p, n_q), 0.0) / (width * width));
@@ -49,7 +49,7 @@ void main() {
   // mirror lights. Its sigma is at least young_sigma / frames, as NRD's history fix blurs young
   // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (< 0.01, ssr_main.glsl) have no noise.
   // Where that widens the blur, a neighbour counts only as far as its normal keeps the
-  // reflection inside this pixel's lobe (young_weight): a flat floor blurs, a chrome sphere's
+  // reflection inside this pixel's lobe (lobe_weight): a flat floor blurs, a chrome sphere's
   // sharp reflection does not.
   bool young = false;
   if (pass.params.temporal != 0 && g.roughness >= 0.01) {

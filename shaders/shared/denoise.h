@@ -21,7 +21,7 @@ struct DenoiseParams {
   float bilateral_sigma SSR_DEFAULT(2.0f);  // pixels: spatial sigma at full variance
   int firefly SSR_DEFAULT(1);               // stage 1: reused rays weigh 1 / (1 + luminance), less with history
   float young_sigma SSR_DEFAULT(2.0f);      // stage 3: sigma >= young_sigma / frames of history (sampled lobes)
-  int pad0 SSR_DEFAULT(0), pad1 SSR_DEFAULT(0), pad2 SSR_DEFAULT(0);  // std140: DenoisePass.trace starts at 16 bytes
+  int pad0 SSR_DEFAULT(0), pad1 SSR_DEFAULT(0), pad2 SSR_DEFAULT(0);  // std140: DenoisePass.trace starts at a 16-byte boundary
 };
 
 // What one denoiser stage reads besides its parameters (UBO_PASS).

@@ -52,10 +52,11 @@ std::vector<ParamDesc> denoise_options(std::size_t offset, bool with_switch) {
                   "Spatial sigma for fully noisy pixels (relative noise 1); less noise, a smaller sigma."},
                  offsetof(D, bilateral_sigma)));
   t.push_back(at({"young_sigma", ParamType::Float, 0, 0, 8, 0.1, "pixels",
-                  "Stage 3's sigma is at least this over the frames of history on sampled lobes (rougher "
-                  "than 0.01): a pixel new on screen, disoccluded or after a cut holds one noisy sample, "
-                  "near mirrors included, and gets a wide blur that fades as its history grows (needs "
-                  "the temporal stage; 0: off)."},
+                  "Stage 3's sigma is at least this over the frames of history on sampled lobes (roughness "
+                  "0.01 and up): a pixel new on screen, disoccluded or after a cut holds one noisy sample, "
+                  "near mirrors included, and gets a wide blur that fades as its history grows, to "
+                  "young_sigma / history at most (none from 0.3 px). Needs the temporal and bilateral stages; "
+                  "bilateral_radius bounds the window; 0: off."},
                  offsetof(D, young_sigma)));
   return t;
 }

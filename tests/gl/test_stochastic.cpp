@@ -422,8 +422,9 @@ TEST(Denoiser, FiltersDoNotCrossADepthEdge) {
 // floor) under a still camera, fed 1 + uniform noise every frame, every stage on: a pixel with
 // one frame of history gets the young-history blur (sigma young_sigma / 1), so frame 0's output
 // is much smoother than its input; by frame 15 (sigma 2 / 16) the blur is gone, and as the
-// bilateral's output feeds no history, frame 15 is the image it is with young_sigma 0. An exact
-// mirror (roughness 0) has no noise to hide: its frame 0 is its input.
+// bilateral's output feeds no history (the probe has no previous_frame), frame 15 is the image
+// it is with young_sigma 0. An exact mirror (roughness 0) has no noise to hide: its frame 0 is
+// its input.
 TEST(Denoiser, YoungHistoryBlurFadesAsTheHistoryGrows) {
   const auto run = [](float roughness, float young_sigma, int frames) {
     const Scene s = floor_scene(roughness);
