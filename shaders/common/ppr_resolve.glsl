@@ -139,13 +139,13 @@ bool ppr_perturbed(ivec2 p, GSample g, vec2 source, float rough, inout vec3 colo
   vec3 hit_vs = view_position(src_uv, texelFetch(g_depth, ivec2(source), 0).r);
   float reach = length(hit_vs - g.pos_vs);
   vec3 v_dir = -normalize(g.pos_vs);
-  int n = rough < 0.01 ? 1 : clamp(params.samples, 1, 16);
+  int n = rough < SSR_MIRROR_ROUGHNESS ? 1 : clamp(params.samples, 1, 16);
   vec3 sum = vec3(0.0);
   float found = 0.0;
   off_surface = false;
   for (int s = 0; s < n; ++s) {
     vec3 dir = reflect(-v_dir, g.n_vs);  // the G-buffer normal carries the normal map
-    if (rough >= 0.01) {
+    if (rough >= SSR_MIRROR_ROUGHNESS) {
       vec3 l = sample_reflection(g.n_vs, v_dir, rough, sample_xi(uint(p.x), uint(p.y), uint(s), uint(params.seed)));
       if (dot(l, g.n_vs) > 0.0) dir = l;
     }
@@ -197,7 +197,7 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   bool bumpy = params.normal_maps != 0 && abs(dot(g.n_vs, plane_n)) < 0.99999;
   // A normal-mapped mirror's rays leave the plane's solution: its reach is a guess that put
   // ripples 8 dB under hiz (640x360). The fallback traces them; without one, the guess stands.
-  if (bumpy && rough < 0.01 && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
+  if (bumpy && rough < SSR_MIRROR_ROUGHNESS && u_fallback == 1) return PprResolved(false, vec4(0.0), debug);
   // Rough reflectors spread their rays too far from the mirror solution for its reach to say
   // where they go: the fallback answers them, hit or miss (ramp's bands, 1080p, llvmpipe: the
   // approximation ahead of hiz up to roughness 0.3, behind from 0.4 by 0.1 to 1.2 dB).
@@ -205,7 +205,7 @@ PprResolved ppr_resolve(ivec2 p, GSample g) {
   // Nearest, as the ideal reads: a bilinear fetch at an exact source blurs across outlines.
   vec3 color = texelFetch(lit_tex, ivec2(source), 0).rgb;
   bool off_surface = false;
-  if ((bumpy || rough >= 0.01) && !ppr_perturbed(p, g, source, rough, color, off_surface) && u_fallback == 1)
+  if ((bumpy || rough >= SSR_MIRROR_ROUGHNESS) && !ppr_perturbed(p, g, source, rough, color, off_surface) && u_fallback == 1)
     return PprResolved(false, vec4(0.0), debug);
   // The approximation's point off every surface: the sampled ray goes elsewhere. Where the
   // fallback hit, take its answer: it traced the same first sample (same sequence and seed).

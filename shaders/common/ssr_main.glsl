@@ -67,7 +67,7 @@ float reflect_pixel(ivec2 p) {
 #endif
   float rough = o.roughness >= 0.0 ? o.roughness : g.roughness;
   vec3 v = -normalize(g.pos_vs);
-  bool mirror = rough < 0.01;
+  bool mirror = rough < SSR_MIRROR_ROUGHNESS;
   int n = mirror ? 1 : clamp(o.samples, 1, 16);
   vec3 f0 = f0_of(g.albedo, g.metallic, g.reflectance);
 

@@ -9,6 +9,7 @@
 #include "common/gbuffer.glsl"
 #include "common/denoise_common.glsl"
 #include "shared/denoise.h"
+#include "shared/sampling.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = UBO_PASS) uniform PassBlock { DenoisePass pass; };
@@ -47,12 +48,12 @@ void main() {
   // a few samples that the accumulation has not averaged yet, however sharp its lobe: near
   // mirrors (corridor's floor, roughness 0.05, whose sigma above is under 0.3) sparkle where they
   // mirror lights. Its sigma is at least young_sigma / frames, as NRD's history fix blurs young
-  // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (< 0.01, ssr_main.glsl) have no noise.
+  // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (shared/sampling.h) have no noise.
   // Where that widens the blur, a neighbour counts only as far as its normal keeps the
   // reflection inside this pixel's lobe (lobe_weight): a flat floor blurs, a chrome sphere's
   // sharp reflection does not.
   bool young = false;
-  if (pass.params.temporal != 0 && g.roughness >= 0.01) {
+  if (pass.params.temporal != 0 && g.roughness >= SSR_MIRROR_ROUGHNESS) {
     float s = pass.params.young_sigma / max(stats.g, 1.0);  // stats.g: frames of history
     young = s > sigma;
     sigma = max(sigma, s);

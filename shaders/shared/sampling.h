@@ -7,6 +7,11 @@
 #pragma once
 #include "shared/interop.h"
 
+// Below this perceptual roughness a technique traces a lobe as its one exact mirror ray: no
+// sample, no noise. The tracers, `stochastic`, PPR's resolve and the denoiser read it here (the
+// reference's own threshold is its parameter mirror_roughness, by default the same).
+#define SSR_MIRROR_ROUGHNESS 0.01
+
 SSR_SHARED_BEGIN
 
 // PCG hash (Jarzynski & Olano 2020): a good 32-bit mix, identical in C++ and GLSL.

@@ -58,7 +58,7 @@ void main() {
     xi.x *= 1.0 - clamp(params.ggx_bias, 0.0, 1.0);  // towards the lobe's centre (less noise, some bias)
     // Mirrors (as the tracers' ssr_main) take the exact mirror ray; others a GGX VNDF sample,
     // the mirror ray where it falls under the horizon.
-    vec3 l = g.roughness < 0.01 ? reflect(-v, g.n_vs) : sample_reflection(g.n_vs, v, g.roughness, xi);
+    vec3 l = g.roughness < SSR_MIRROR_ROUGHNESS ? reflect(-v, g.n_vs) : sample_reflection(g.n_vs, v, g.roughness, xi);
     if (dot(l, g.n_vs) <= 0.0) l = reflect(-v, g.n_vs);
     float pdf = reflection_pdf(g.n_vs, v, l, g.roughness);
     // Glossy rays stop sooner: the few that walk far (grazing ones) set the dispatch's time.
