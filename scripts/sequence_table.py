@@ -28,15 +28,17 @@ def header(r):
 
 
 def summary_table(r):
-    print("| technique | mean PSNR | flicker mean | flicker p95 | x truth | disoccluded PSNR | elsewhere PSNR "
-          "| moving reflections PSNR |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|")
+    second = r.get("second_truth", False)  # sequence --second-truth: x truth without the truth's noise too
+    print("| technique | mean PSNR | flicker mean | flicker p95 | x truth | " + ("x truth, no noise | " if second else "")
+          + "disoccluded PSNR | elsewhere PSNR | moving reflections PSNR |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|" + ("---:|" if second else ""))
     for s in r["summary"]:
         conv = [p for p in s["convergence"] if p is not None]
         mean = sum(conv) / len(conv) if conv else None
         g, i = s["ghosting"], s["instability"]
         print(f"| {s['label']} | {fmt(mean, '%.2f')} | {fmt(i['mean'], '%.4f')} | {fmt(i['p95'], '%.4f')} | "
               f"{fmt(i.get('change_ratio'), '%.2f')} | "
+              + (f"{fmt(i.get('noise_free_change_ratio'), '%.2f')} | " if second else "") +
               f"{fmt(g['disoccluded_psnr'], '%.2f')} | {fmt(g['elsewhere_psnr'], '%.2f')} | "
               f"{fmt(g.get('moving_psnr'), '%.2f')} |")  # runs before it have none
 
