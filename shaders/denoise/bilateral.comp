@@ -25,9 +25,10 @@ vec4 resolve(vec4 premultiplied) {
 // lobe's half vectors spread about alpha = roughness^2 around the normal (taken as at least 0.02
 // rad, a chosen floor: flat surfaces blur, a sphere's few degrees a pixel do not), so a normal
 // turned by angle a weighs exp(-(a / alpha)^2), with a^2 ~ 2 (1 - cos a).
-float lobe_weight(vec3 n_p, vec3 n_q, float roughness) {
+// `strength` in [0, 1] scales the exponent (0: every neighbour counts in full).
+float lobe_weight(vec3 n_p, vec3 n_q, float roughness, float strength) {
   float width = max(roughness * roughness, 0.02);
-  return exp(-2.0 * max(1.0 - dot(n_p, n_q), 0.0) / (width * width));
+  return exp(-2.0 * strength * max(1.0 - dot(n_p, n_q), 0.0) / (width * width));
 }
 
 void main() {
@@ -51,11 +52,14 @@ void main() {
   // pixels (docs/RESULTS.md: corridor's pan). Exact mirrors (shared/sampling.h) have no noise.
   // Where that widens the blur, a neighbour counts only as far as its normal keeps the
   // reflection inside this pixel's lobe (lobe_weight): a flat floor blurs, a chrome sphere's
-  // sharp reflection does not.
-  bool young = false;
+  // sharp reflection does not. Its strength fades with log2(young sigma / own sigma), from full at
+  // 4x down to none where the two meet, so as the history grows the sharpening lets go as
+  // gradually as the blur narrows (switched off at once, a glossy sphere's checker jumped when
+  // the blur stopped widening: Denoiser.YoungHistoryBlurFadesWithoutAStepOnACurvedSurface).
+  float lobe = 0.0;
   if (pass.params.temporal != 0 && g.roughness >= SSR_MIRROR_ROUGHNESS) {
     float s = pass.params.young_sigma / max(stats.g, 1.0);  // stats.g: frames of history
-    young = s > sigma;
+    lobe = clamp(log2(s / max(sigma, 1e-6)) * 0.5, 0.0, 1.0);
     sigma = max(sigma, s);
   }
   if (r == 0 || sigma < 0.3) {
@@ -73,7 +77,7 @@ void main() {
       if (!is_reflective(gq)) continue;
       float w = exp(-float(x * x + y * y) * inv_two_sigma2) *
                 geometric_weight(g.pos_vs, g.n_vs, g.roughness, gq.pos_vs, gq.n_vs, gq.roughness);
-      if (young) w *= lobe_weight(g.n_vs, gq.n_vs, g.roughness);
+      if (lobe > 0.0) w *= lobe_weight(g.n_vs, gq.n_vs, g.roughness, lobe);
       sum += w * texelFetch(radiance_tex, q, 0);
       weight += w;
     }
