@@ -475,19 +475,29 @@ TEST(Denoiser, YoungHistoryBlurFadesAsTheHistoryGrows) {
   EXPECT_LT(mirror_worst, 2e-3);  // half-float roundings, as SpatialOnAFlatMirrorReturnsItsInput
 }
 
+namespace {
+// The floor scene without its box, with a unit sphere (object id 1) standing on it, all of one
+// roughness; and a sharp checker of 2-pixel squares (4 against 0.1) to feed the denoiser.
+Scene sphere_on_floor(float roughness) {
+  Scene s = floor_scene(roughness);
+  s.meshes.pop_back();  // the box
+  add_mesh(s, meshgen::sphere(1.0f), "sphere", 1, glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}));
+  validate(s);
+  return s;
+}
+glm::vec3 checker(int x, int y, int) { return glm::vec3(((x / 2 + y / 2) % 2) ? 4.0f : 0.1f); }
+}  // namespace
+
 // The same blur must not smear what a curved near mirror reflects: a sphere of roughness 0.05 on
 // the floor, fed a sharp checker without noise, one frame (one frame of history everywhere).
 // The floor is flat, so its neighbours count in full and its checker blurs; the sphere's normals
 // turn by degrees a pixel, far outside its lobe, so its checker comes back as it went in.
 TEST(Denoiser, YoungHistoryBlurKeepsACurvedMirrorSharp) {
-  Scene s = floor_scene(0.05f);
-  s.meshes.pop_back();  // the box
-  add_mesh(s, meshgen::sphere(1.0f), "sphere", 1, glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}));
-  validate(s);
+  const Scene s = sphere_on_floor(0.05f);
   Renderer r(s, kW, kH);
   DenoiseProbe probe;
   probe.load(r.shaders());
-  probe.radiance = [](int x, int y, int) { return glm::vec3(((x / 2 + y / 2) % 2) ? 4.0f : 0.1f); };
+  probe.radiance = checker;
   r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
   const RgbaImageF out = r.read_texture(r.reflection());
   const std::vector<std::uint16_t> material = r.read_material();
@@ -518,14 +528,11 @@ TEST(Denoiser, YoungHistoryBlurKeepsACurvedMirrorSharp) {
 // 0.15) fed a still, sharp checker changes from frame to frame by little more than it did the
 // frame before (the young sigma shrinks as 2 / frames), never by a jump.
 TEST(Denoiser, YoungHistoryBlurFadesWithoutAStepOnACurvedSurface) {
-  Scene s = floor_scene(0.15f);
-  s.meshes.pop_back();  // the box
-  add_mesh(s, meshgen::sphere(1.0f), "sphere", 1, glm::translate(glm::mat4(1.0f), {0.0f, 1.0f, 0.0f}));
-  validate(s);
+  const Scene s = sphere_on_floor(0.15f);
   Renderer r(s, kW, kH);
   DenoiseProbe probe;
   probe.load(r.shaders());
-  probe.radiance = [](int x, int y, int) { return glm::vec3(((x / 2 + y / 2) % 2) ? 4.0f : 0.1f); };
+  probe.radiance = checker;
   const std::vector<std::uint16_t> material = [&] {
     r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
     return r.read_material();
