@@ -106,13 +106,18 @@ ReferenceImages ScoredFrame::references(int samples) {
   return r;
 }
 
-void ScoredFrame::rerun_reference(int samples, long shift) {
+std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples) {
   auto ref = create_technique(truth_name());
-  ParamSet from = reference_.params(), to = ref->params();
+  ParamSet from = truth.params(), to = ref->params();
   to.copy_values_from(from);
-  to.set(static_cast<std::size_t>(to.find("samples")), samples);
+  if (samples > 0) to.set(static_cast<std::size_t>(to.find("samples")), samples);
   const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
   to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + shift) % 1000000));
+  return ref;
+}
+
+void ScoredFrame::rerun_reference(int samples, long shift) {
+  auto ref = reference_with_seed(reference_, shift, samples);
   ref->load(renderer_.shaders());
   renderer_.render(frame_, *ref, ViewMode::Final, nullptr);
   last_rerun_ = std::move(ref);
@@ -128,8 +133,7 @@ std::optional<TruthNoise> ScoredFrame::truth_noise() {
     sampled = labels_.classes[i] != PixelClass::NotReflective && !labels_.glass[i] &&
               labels_.roughness[i] >= mirror_roughness;
   if (!sampled) return *(truth_noise_ = std::optional<TruthNoise>());
-  // A seed apart from the noise floor's run (7919), so the two truths are independent.
-  rerun_reference(static_cast<int>(value("samples")), 2 * 7919);
+  rerun_reference(static_cast<int>(value("samples")), kTruthNoiseSeedShift);
   const RgbaImageF other = display_of(ViewMode::Final);
   other_truth_reflected_ = display_of(ViewMode::Reflected);
   const auto noise = [&](auto keep) -> std::optional<double> {

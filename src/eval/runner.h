@@ -84,6 +84,14 @@ class ScoredFrame {
 // The rays per rough pixel of a technique (its `samples` parameter), 0 when it has none.
 int technique_samples(Technique& t);
 
+// How far the second truth's seed lies from the truth's (the truth's own noise: compare, bench,
+// sequence and the viewer), apart from the noise floor's run (7919): independent samples.
+inline constexpr long kTruthNoiseSeedShift = 2 * 7919;
+
+// A reference set up as `truth` (the same parameters) with its seed moved by `shift` and, where
+// `samples` > 0, that many rays a rough pixel; not loaded.
+std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples = 0);
+
 struct TimingOptions {
   int warmup = 3;
   int frames = 10;

@@ -10,6 +10,7 @@
 #include "core/cli_common.h"
 #include "core/errors.h"
 #include "core/json_reader.h"
+#include "eval/metrics.h"
 #include "registry/presets.h"
 #include "techniques/assignments.h"
 #include "scene/animation.h"
@@ -169,6 +170,8 @@ void Viewer::on_Truth(const std::string& a) {
   }
 }
 
+void Viewer::on_TruthNoise(const std::string& a) { truth_noise_ = a == "on"; }
+
 // Draws the window again (the same frame: time and history stay; a side whose settings changed
 // since it was drawn runs) and saves it as presented.
 void Viewer::on_WindowShot(const std::string& a) {
@@ -193,7 +196,8 @@ void Viewer::on_Magnifier(const std::string& a) { magnifier_ = a == "off" ? 0 : 
 
 // What the status bar says, for scripts and tests: {"message", "error", "device", "clock",
 // "frame_ms" (the last timed frame; null before one), "image": [w, h], "truth": "none" | "current" | "stale" | "not computed" | "computing", "psnr",
-// "psnr_truth" (the grid's A against its truth), "sections_open" (the panel's, as last drawn),
+// "psnr_truth" (the grid's A against its truth), "truth_noise" (its noise floor, dB, "none" or
+// null: Viewer::truth_noise_shown), "sections_open" (the panel's, as last drawn),
 // "frame" (the index of the frame shown: history counts it), "history" (true: carried over from
 // the frame before; false: restarted by a cut, a jump or a change), "history_break" (why not, or
 // null), "time" (scene seconds)}.
@@ -209,6 +213,10 @@ void Viewer::on_Status(const std::string&) {
   j["truth"] = truth_state();
   j["psnr"] = figure_shown() ? nlohmann::json(psnr_) : nlohmann::json(nullptr);
   j["psnr_truth"] = truth_figure_shown() ? nlohmann::json(psnr_truth_) : nlohmann::json(nullptr);
+  // The truth's noise floor (truth-noise on, a current truth shown); null otherwise. A truth that
+  // samples no pixel (exact rays only) is the same in both runs: its floor is infinite, "none".
+  const std::optional<double> floor = truth_noise_shown();
+  j["truth_noise"] = !floor ? nlohmann::json(nullptr) : *floor >= kPsnrCap ? nlohmann::json("none") : nlohmann::json(*floor);
   nlohmann::json open = nlohmann::json::array();  // as last drawn (none with the panel hidden)
   for (const SectionInfo& s : kPanelSections)
     if (panel_shown_ && section_open_[s.section]) open.push_back(s.name);

@@ -48,6 +48,8 @@
   X(Pause, "pause", None, "", "stop playback")                                                          \
   X(Truth, "truth", TruthPolicy, "now|rest|live|manual",                                                \
     "the on-demand side (the reference): compute now, once the camera rests, every changed frame, or only when asked") \
+  X(TruthNoise, "truth-noise", OnOff, "on|off",                                                         \
+    "with the truth shown, also estimate its own noise: a second truth with another seed (twice the truth's time); the figures show its noise floor") \
   X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays), drawn again without advancing time") \
   X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line, and pin the inspector there (the first one draws one more frame: the debug image is written from then on)") \
   X(Magnifier, "magnifier", Zoom, "off|2..16", "the magnifier at the cursor (nearest filtering) at this zoom, or off") \

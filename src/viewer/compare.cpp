@@ -334,6 +334,43 @@ void Viewer::render(bool advance) {
     psnr_valid_ = psnr_truth_valid_ = false;
     psnr_key_.clear();
   }
+  update_truth_noise();
+}
+
+// The truth side shown and current (A, B or the grid's), or -1.
+int Viewer::current_truth_side() const {
+  for (int i = 0; i < active_sides(); ++i)
+    if (on_demand(i) && side_current(i)) return i;
+  return -1;
+}
+
+void Viewer::update_truth_noise() {
+  const int t = truth_noise_ && view_ == VIEW_FINAL ? current_truth_side() : -1;
+  if (t < 0) return;
+  const Side& s = sides_[t];
+  if (noise_shown_key_ == s.shown_key && noise_ran_key_ == s.ran_key) return;
+  if (noise_ran_key_ != s.ran_key) {
+    // The truth's settings with compare's second seed.
+    const std::unique_ptr<Technique> second = reference_with_seed(*s.technique, kTruthNoiseSeedShift);
+    second->load(renderer_->shaders());
+    set_reference_progress(*second, [this](double f) { draw_progress("truth noise", f); });
+    renderer_->render(current_frame(), *second, ViewMode::Final, nullptr);
+    noise_color_ = renderer_->read_texture(renderer_->color());
+    noise_ran_key_ = s.ran_key;
+  }
+  // Over the figures' pixels, with this exposure: the PSNR of the two truths plus 3.01 dB (half
+  // the mean squared difference: what a noise-free truth would score against either).
+  const float exposure = renderer_->settings.exposure;
+  const std::optional<double> p = psnr_where(display_values(renderer_->read_texture(s.color), exposure),
+                                             display_values(noise_color_, exposure), scored_pixels(*renderer_));
+  noise_psnr_ = !p ? p : *p >= kPsnrCap ? kPsnrCap : std::min(*p + 10.0 * std::log10(2.0), kPsnrCap);
+  noise_shown_key_ = s.shown_key;
+}
+
+std::optional<double> Viewer::truth_noise_shown() const {
+  const int t = truth_noise_ && view_ == VIEW_FINAL ? current_truth_side() : -1;
+  if (t < 0 || sides_[t].shown_key != noise_shown_key_ || sides_[t].ran_key != noise_ran_key_) return std::nullopt;
+  return noise_psnr_;
 }
 
 }  // namespace ssr

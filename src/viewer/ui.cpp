@@ -378,6 +378,13 @@ void Viewer::side_panel(double dt) {
         if (psnr_truth_ >= kPsnrCap) ImGui::Text("PSNR A vs truth: identical");
         else ImGui::Text("PSNR A vs truth: %.2f dB", psnr_truth_);
       }
+      if (const std::optional<double> floor = truth_noise_shown()) {  // truth-noise on
+        if (*floor >= kPsnrCap) ImGui::Text("truth noise floor: none (exact rays)");
+        else ImGui::Text("truth noise floor: %.2f dB", *floor);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("a second truth with another seed: what a noise-free truth would score against this one.\n"
+                            "A figure near it is the truth's noise, not the technique's error (raise reference.samples).");
+      }
       if (compare_ == CompareGrid)  // each cell renders at a quarter of the image: its own figures
         ImGui::TextDisabled("(at the cells' %dx%d, as compare --size %dx%d)", render_w(), render_h(), render_w(),
                             render_h());
@@ -627,6 +634,11 @@ void Viewer::technique_panel(int i) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("run it on every changed frame (playback: the A-vs-B figure per frame is plotted); slow");
     if (policy != static_cast<int>(truth_policy_)) truth_policy_ = static_cast<TruthPolicy>(policy);
+    bool noise = truth_noise_;
+    if (ImGui::Checkbox("estimate its noise", &noise)) ui_command(Verb::TruthNoise, noise ? "on" : "off");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("after each new truth, a second one with another seed (twice the time): the figures at the top "
+                        "show the truth's noise floor");
   }
   ParamSet params = side.technique->params();
   const ParamSet ran = side.technique->ran_params();

@@ -175,6 +175,18 @@ class Viewer {
   gl::Texture2D grid_diff_;   // the grid's |A - truth| cell
   gl::Framebuffer blit_fbo_;  // created once the context exists
 
+  // The truth's own noise (truth-noise on): a second truth with another seed, run after each new
+  // truth image; half their mean squared difference, as PSNR, is the noise floor (README "The
+  // truth's own noise", as compare and bench estimate it).
+  bool truth_noise_ = false;
+  RgbaImageF noise_color_;       // the second truth's composited colour
+  std::string noise_ran_key_;    // the truth side's ran_key it was run for
+  std::string noise_shown_key_;  // the truth side's shown_key the figure is of
+  std::optional<double> noise_psnr_;
+  int current_truth_side() const;  // the reference side shown and current, or -1
+  void update_truth_noise();
+  std::optional<double> truth_noise_shown() const;  // the floor, where a current truth is shown
+
   // Traceable mask: a reference of its own, run on demand, shown as its class map.
   std::unique_ptr<Technique> mask_ref_;
   gl::Texture2D mask_tex_;

@@ -3,6 +3,8 @@
 # hiz equals `ssrlab compare`'s PSNR of hiz on the same frame (same metric code, same pixels:
 # the final image's display values on the reflective pixels). Usage:
 # viewer_figures.sh SSRLAB_VIEW SSRLAB OUTDIR
+# With truth-noise on, the truth's noise floor it shows is compare's too (a second truth, the
+# same seed offset, the same pixels).
 set -eu
 viewer=$1; ssrlab=$2; outdir=$3
 rm -rf "$outdir"; mkdir -p "$outdir"; cd "$outdir"
@@ -70,3 +72,24 @@ print('hiz against hiz with 8 iterations:', s['psnr'])
 assert s['psnr'] is not None and s['psnr'] < 60, 'set-b did not reach B alone'
 PY
 echo "viewer set-b ok"
+
+# The truth's noise floor: cornell's glossy floor samples the truth (4 rays a pixel here), so two
+# seeds differ; the viewer's floor for this frame is compare's `truth_noise`, and it is gone once
+# the estimate is switched off.
+printf 'technique hiz\ntechnique-b reference\nset reference.samples=4\ncompare split\ntruth-noise on\nframes 2\nstatus\ntruth-noise off\nframes 1\nstatus\n' > noise.txt
+xvfb-run -a -f "$outdir/Xauthority" -s "-screen 0 800x600x24" "$viewer" --ini "$outdir/imgui.ini" --scene cornell --size 320x180 \
+  --script noise.txt > noise.log 2>&1 || { cat noise.log; exit 1; }
+"$ssrlab" compare --scene cornell --size 320x180 --techniques hiz --set reference.samples=4 --frames 1 \
+  --out noise-grid.png --json noise.json > noise-compare.txt 2>&1 || { cat noise-compare.txt; exit 1; }
+python3 - <<'PY'
+import json
+status = [json.loads(l.split('status ', 1)[1]) for l in open('noise.log') if 'ssrlab-view: status ' in l]
+cli = json.load(open('noise.json'))['truth_noise']['psnr']
+print('cornell 320x180, 4 samples, truth noise floor: viewer', status[0]['truth_noise'], 'compare', cli,
+      '; off:', status[1]['truth_noise'])
+assert isinstance(status[0]['truth_noise'], float), 'the viewer showed no noise floor'
+assert abs(status[0]['truth_noise'] - cli) <= 0.01, 'the viewer and compare disagree on the truth noise'
+assert status[0]['psnr'] < 60, 'the two sides were not both drawn'
+assert status[1]['truth_noise'] is None, 'truth-noise off still shows a floor'
+PY
+echo "viewer truth noise ok"
