@@ -3,8 +3,9 @@
 
 usage: sequence_table.py [--regions] FILE.json...
 One table per file: per technique the mean PSNR over truth frames, flicker (mean and p95 of the
-excess change beyond the truth's, and the technique's change over the truth's: "x truth") and
-ghosting (PSNR on recently disoccluded pixels vs elsewhere).
+excess change beyond the truth's, and the technique's change over the truth's: "x truth"; with
+`sequence --second-truth` also over the truth's change without its noise: "x truth, no noise")
+and ghosting (PSNR on recently disoccluded pixels vs elsewhere).
 --regions: the flicker mean per region instead (the summary's instability.regions), one column
 per region that holds pixels in the file.
 """

@@ -59,7 +59,7 @@ void main() {
   float lobe = 0.0;
   if (pass.params.temporal != 0 && g.roughness >= SSR_MIRROR_ROUGHNESS) {
     float s = pass.params.young_sigma / max(stats.g, 1.0);  // stats.g: frames of history
-    lobe = clamp(log2(s / max(sigma, 1e-6)) * 0.5, 0.0, 1.0);
+    lobe = s > sigma ? clamp(0.5 * log2(s / sigma), 0.0, 1.0) : 0.0;  // sigma >= 0.025 here
     sigma = max(sigma, s);
   }
   if (r == 0 || sigma < 0.3) {

@@ -53,7 +53,7 @@
   X(WindowShot, "window-shot", Png, "PATH.png", "the whole window as the user sees it (panel, status bar, overlays), drawn again without advancing time") \
   X(Inspect, "inspect", Pixel, "X Y", "print the pixel inspector's values of image pixel (X, Y), row 0 at the top, as one JSON line, and pin the inspector there (the first one draws one more frame: the debug image is written from then on)") \
   X(Magnifier, "magnifier", Zoom, "off|2..16", "the magnifier at the cursor (nearest filtering) at this zoom, or off") \
-  X(Status, "status", None, "", "print the status bar's message, device, frame time, truth state, frame index, whether the history carried over (and why not) and scene time as one JSON line")
+  X(Status, "status", None, "", "print the status bar's message, device, frame time, truth state, the figures (A vs B, A vs truth, the truth's noise floor), frame index, whether the history carried over (and why not) and scene time as one JSON line")
 
 namespace ssr {
 
