@@ -154,7 +154,7 @@ ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& trut
   return m;
 }
 
-std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask) {
+std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask) {
   check_same_size(a, "a", b, "b");
   if (mask.size() != pixel_count(a))
     throw std::invalid_argument("metrics: the mask has " + std::to_string(mask.size()) + " entries for " +
@@ -166,7 +166,16 @@ std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const
     sum += pixel_sq_error(a, b, i);
     ++count;
   }
-  return psnr_from_rmse(rmse_of(sum, count));
+  return rmse_of(sum, count);
+}
+
+std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask) {
+  return psnr_from_rmse(rmse_where(a, b, mask));
+}
+
+std::optional<double> noise_floor_psnr(const std::optional<double>& rmse_between_truths) {
+  return rmse_between_truths ? psnr_from_rmse(std::optional<double>(*rmse_between_truths / std::sqrt(2.0)))
+                             : std::nullopt;
 }
 
 std::size_t count_nonfinite(const std::vector<float>& values) {

@@ -40,9 +40,15 @@ ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& trut
 
 std::size_t count_nonfinite(const std::vector<float>& values);
 
-// PSNR of a vs b (display values) over the pixels where mask[i] holds; nullopt when none does.
-// The viewer's A-vs-B figure: over the reflective pixels of the final image it is compare's
+// RMSE and PSNR of a vs b (display values) over the pixels where mask[i] holds; nullopt when none
+// does. The viewer's A-vs-B figure: over the reflective pixels of the final image it is compare's
 // `psnr` when B is the reference.
+std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask);
 std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask);
+
+// The truth's own noise from two truths of independent seeds, `rmse_between_truths` apart: half
+// their mean squared difference is the noise variance one carries, and as PSNR it is what the
+// noise-free truth would score against either (compare, bench, sequence and the viewer).
+std::optional<double> noise_floor_psnr(const std::optional<double>& rmse_between_truths);
 
 }  // namespace ssr

@@ -136,10 +136,7 @@ std::optional<TruthNoise> ScoredFrame::truth_noise() {
   rerun_reference(static_cast<int>(value("samples")), kTruthNoiseSeedShift);
   const RgbaImageF other = display_of(ViewMode::Final);
   other_truth_reflected_ = display_of(ViewMode::Reflected);
-  const auto noise = [&](auto keep) -> std::optional<double> {
-    const std::optional<double> rmse = rmse_where(truth_, other, labels_.classes, keep);
-    return rmse ? psnr_from_rmse(std::optional<double>(*rmse / std::sqrt(2.0))) : std::nullopt;
-  };
+  const auto noise = [&](auto keep) { return noise_floor_psnr(rmse_where(truth_, other, labels_.classes, keep)); };
   TruthNoise n;
   n.psnr = noise([](PixelClass c) { return c != PixelClass::NotReflective; });
   n.psnr_traceable = noise([](PixelClass c) { return c == PixelClass::Traceable; });

@@ -359,12 +359,10 @@ void Viewer::update_truth_noise() {
     noise_color_ = renderer_->read_texture(renderer_->color());
     noise_ran_key_ = s.ran_key;
   }
-  // Over the figures' pixels, with this exposure: the PSNR of the two truths plus 3.01 dB (half
-  // the mean squared difference: what a noise-free truth would score against either).
+  // Over the figures' pixels, with this exposure.
   const float exposure = renderer_->settings.exposure;
-  const std::optional<double> p = psnr_where(display_values(renderer_->read_texture(s.color), exposure),
-                                             display_values(noise_color_, exposure), scored_pixels(*renderer_));
-  noise_psnr_ = !p ? p : *p >= kPsnrCap ? kPsnrCap : std::min(*p + 10.0 * std::log10(2.0), kPsnrCap);
+  noise_psnr_ = noise_floor_psnr(rmse_where(display_values(renderer_->read_texture(s.color), exposure),
+                                            display_values(noise_color_, exposure), scored_pixels(*renderer_)));
   noise_shown_key_ = s.shown_key;
 }
 
