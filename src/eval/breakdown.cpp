@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <glm/gtc/packing.hpp>
 
 #include "core/errors.h"
 
@@ -113,8 +112,6 @@ std::string Region::name() const {
     if (k == kind) return k == RegionKind::Reflector ? std::string(n) + ":" + std::to_string(reflector) : n;
   return "?";
 }
-
-float as_stored_roughness(float r) { return glm::unpackHalf1x16(glm::packHalf1x16(r)); }
 
 namespace {
 const float kMirrorBound = as_stored_roughness(kMirrorBandBelow);

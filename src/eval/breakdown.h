@@ -13,16 +13,15 @@
 
 #include "core/image.h"
 #include "eval/metrics.h"
+#include "shared/roughness_bands.h"
 
 namespace ssr {
 
-// Roughness bands on perceptual roughness: mirror < 0.05 <= glossy <= 0.4 < rough. They are
-// applied to the roughness as the G-buffer holds it, a half float (0.05 is 0.049988 there), with
-// the bounds rounded the same way: a material authored at 0.05 is glossy (corridor's floor), and
-// its pixels have a noise floor.
-constexpr float kMirrorBandBelow = 0.05f;
-constexpr float kRoughBandAbove = 0.4f;
-float as_stored_roughness(float r);  // r as the G-buffer's half float holds it
+// Roughness bands (mirror < 0.05 <= glossy <= 0.4 < rough), compared on the roughness as the
+// G-buffer holds it (shared/roughness_bands.h).
+constexpr float kMirrorBandBelow = MIRROR_BAND_BELOW;
+constexpr float kRoughBandAbove = ROUGH_BAND_ABOVE;
+using shared::as_stored_roughness;
 
 // A technique "claims a hit" where its confidence exceeds this (as `coverage` does).
 constexpr float kHitConfidence = 0.5f;

@@ -22,6 +22,7 @@
 #include "shared/classification.h"
 #include "shared/colormap.h"
 #include "shared/telemetry.h"
+#include "shared/roughness_bands.h"
 
 using namespace ssr;
 namespace sh = ssr::shared;
@@ -245,4 +246,45 @@ void main() {
     EXPECT_EQ(sh::telemetry_iterations(w), std::min(static_cast<std::uint32_t>(c.idle.y), 65535u));
   }
   EXPECT_EQ(bad, 0u);
+}
+
+// roughness_bands.h's rounding to the G-buffer's half float, which the verdicts' bands and the
+// spatial stage's "lobe wide enough to reuse by the BRDF" test both apply to the mirror bound:
+// the bounds bit for bit, so both place a material at exactly 0.05 on the same side of it (as
+// stored, 0.05 is below 0.05). Elsewhere the two may differ by one
+// half-float step: GL leaves the rounding of halfway cases to the implementation (llvmpipe rounds
+// 0.5 + 2^-12 down, glm up), which is why the header's bounds are chosen off those cases.
+TEST(SharedTwins, StoredRoughnessGlslMatchesCpp) {
+  const char* shader = R"glsl(#include "shared/roughness_bands.h"
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Cases { vec4 cases[]; };
+layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= uint(cases.length())) return;
+  results[i] = vec4(as_stored_roughness(cases[i].x), as_stored_roughness(MIRROR_BAND_BELOW),
+                    as_stored_roughness(ROUGH_BAND_ABOVE), 0.0);
+}
+)glsl";
+  const gl::Program prog = test::compile_test_shader("roughness_twins", shader);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<glm::vec4> cases;
+  for (int i = 0; i < 4096; ++i) cases.emplace_back(i < 2 ? static_cast<float>(i) : unit(rng), 0, 0, 0);
+  const std::vector<glm::vec4> gpu = test::run_twin_shader<glm::vec4>(prog, cases);
+  const float mirror = sh::as_stored_roughness(MIRROR_BAND_BELOW), rough = sh::as_stored_roughness(ROUGH_BAND_ABOVE);
+  std::size_t bad = 0, exact = 0;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const float cpu = sh::as_stored_roughness(cases[i].x);
+    const float step = std::max(std::abs(cpu) / 1024.0f, 1e-7f);  // a half's step near cpu (10-bit mantissa)
+    exact += gpu[i].x == cpu;
+    if ((gpu[i].y != mirror || gpu[i].z != rough || std::abs(gpu[i].x - cpu) > step) && ++bad <= 5)
+      ADD_FAILURE() << "roughness " << cases[i].x << ": gpu " << gpu[i].x << " " << gpu[i].y << " " << gpu[i].z
+                    << ", cpu " << cpu << " " << mirror << " " << rough;
+  }
+  std::printf("stored roughness: %zu of %zu random values bit for bit\n", exact, cases.size());
+  EXPECT_EQ(bad, 0u);
+  EXPECT_LT(mirror, static_cast<float>(MIRROR_BAND_BELOW));  // why the rounding is needed
+  EXPECT_GE(sh::as_stored_roughness(0.05f), mirror);         // an authored 0.05 is glossy
+  EXPECT_LT(sh::as_stored_roughness(0.0499f), mirror);       // the next half below is a mirror
 }
