@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-
 #include "core/errors.h"
 
 namespace ssr {

@@ -2,8 +2,8 @@
 // of inputs: sampling.h (hash and random numbers bit for bit; the GGX VNDF sample, the basis and
 // the reflection within float rounding), tonemap.h (the display transform) and colormap.h (the
 // heat map, hue and category colours the views and the legends draw with); classification.h's
-// and telemetry.h's integer helpers bit for bit. ppr_packing.h
-// has its own bit-exact test (test_ppr_packing.cpp).
+// and telemetry.h's integer helpers bit for bit; roughness_bands.h's rounding of the bounds.
+// ppr_packing.h has its own bit-exact test (test_ppr_packing.cpp).
 #include <gtest/gtest.h>
 
 
@@ -251,9 +251,9 @@ void main() {
 // roughness_bands.h's rounding to the G-buffer's half float, which the verdicts' bands and the
 // spatial stage's "lobe wide enough to reuse by the BRDF" test both apply to the mirror bound:
 // the bounds bit for bit, so both place a material at exactly 0.05 on the same side of it (as
-// stored, 0.05 is below 0.05). Elsewhere the two may differ by one
-// half-float step: GL leaves the rounding of halfway cases to the implementation (llvmpipe rounds
-// 0.5 + 2^-12 down, glm up), which is why the header's bounds are chosen off those cases.
+// stored, 0.05 is below 0.05). Elsewhere the two may differ by one half-float step: GL leaves
+// the rounding of halfway cases to the implementation (llvmpipe rounds 0.5 + 2^-12 down, glm
+// up); 0.05 and 0.4 are not halfway cases.
 TEST(SharedTwins, StoredRoughnessGlslMatchesCpp) {
   const char* shader = R"glsl(#include "shared/roughness_bands.h"
 layout(local_size_x = 64) in;
