@@ -113,8 +113,8 @@ std::string Region::name() const {
 }
 
 namespace {
-const float kMirrorBound = as_stored_roughness(kMirrorBandBelow);
-const float kRoughBound = as_stored_roughness(kRoughBandAbove);
+const float kMirrorBound = as_stored_roughness(MIRROR_BAND_BELOW);
+const float kRoughBound = as_stored_roughness(ROUGH_BAND_ABOVE);
 }  // namespace
 
 bool Region::contains(const PixelLabels& l, std::size_t i) const {

@@ -17,10 +17,8 @@
 
 namespace ssr {
 
-// Roughness bands (mirror < 0.05 <= glossy <= 0.4 < rough), compared on the roughness as the
-// G-buffer holds it (shared/roughness_bands.h).
-constexpr float kMirrorBandBelow = MIRROR_BAND_BELOW;
-constexpr float kRoughBandAbove = ROUGH_BAND_ABOVE;
+// Roughness bands (mirror < 0.05 <= glossy <= 0.4 < rough: MIRROR_BAND_BELOW, ROUGH_BAND_ABOVE),
+// compared on the roughness as the G-buffer holds it (shared/roughness_bands.h).
 using shared::as_stored_roughness;
 
 // A technique "claims a hit" where its confidence exceeds this (as `coverage` does).

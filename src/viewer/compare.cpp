@@ -344,9 +344,14 @@ int Viewer::current_truth_side() const {
   return -1;
 }
 
-// Only where the figures are (a compare mode, the final view): nothing else shows the floor.
+// The truth side whose noise floor is estimated (truth-noise on), or -1: only where the figures
+// are (a compare mode, the final view), since nothing else shows the floor.
+int Viewer::noise_truth_side() const {
+  return truth_noise_ && compare_ != CompareOff && view_ == VIEW_FINAL ? current_truth_side() : -1;
+}
+
 void Viewer::update_truth_noise() {
-  const int t = truth_noise_ && compare_ != CompareOff && view_ == VIEW_FINAL ? current_truth_side() : -1;
+  const int t = noise_truth_side();
   if (t < 0) return;
   const Side& s = sides_[t];
   if (noise_shown_key_ == s.shown_key && noise_ran_key_ == s.ran_key) return;
@@ -367,7 +372,7 @@ void Viewer::update_truth_noise() {
 }
 
 std::optional<double> Viewer::truth_noise_shown() const {
-  const int t = truth_noise_ && compare_ != CompareOff && view_ == VIEW_FINAL ? current_truth_side() : -1;
+  const int t = noise_truth_side();
   if (t < 0 || sides_[t].shown_key != noise_shown_key_ || sides_[t].ran_key != noise_ran_key_) return std::nullopt;
   return noise_psnr_;
 }

@@ -184,6 +184,7 @@ class Viewer {
   std::string noise_shown_key_;  // the truth side's shown_key the figure is of
   std::optional<double> noise_psnr_;
   int current_truth_side() const;  // the reference side shown and current, or -1
+  int noise_truth_side() const;    // that side where truth-noise applies (a compare mode, final view), or -1
   void update_truth_noise();
   std::optional<double> truth_noise_shown() const;  // the floor, where a current truth is shown
 
