@@ -152,12 +152,15 @@ void track_distance_from_one(const Renderer& r, double& worst, int& n) {
     }
 }
 
-// The denoiser's spatial stage alone (then the resolve) on floor_scene(roughness).
-struct SpatialOnly {
-  explicit SpatialOnly(float roughness) : s(floor_scene(roughness)), r(s, kW, kH) {
+// Which of the denoiser's stages a probe runs: all three, or one alone (then the resolve).
+enum class Stages { All, SpatialOnly, TemporalOnly };
+
+// A scene, its renderer and a probe loaded for them: every denoiser test's set-up.
+struct Probed {
+  explicit Probed(Scene scene, Stages stages = Stages::All) : s(std::move(scene)), r(s, kW, kH) {
     probe.load(r.shaders());
-    probe.p().temporal = 0;
-    probe.p().bilateral = 0;
+    if (stages == Stages::SpatialOnly) probe.p().temporal = probe.p().bilateral = 0;
+    if (stages == Stages::TemporalOnly) probe.p().spatial = probe.p().bilateral = 0;
   }
   Scene s;
   Renderer r;
@@ -169,7 +172,7 @@ struct SpatialOnly {
 // On a mirror (roughness 0) the spatial stage reuses no neighbour where a pixel has its own
 // ray: it returns its input.
 TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
-  SpatialOnly t(0.0f);
+  Probed t(floor_scene(0.0f), Stages::SpatialOnly);
   auto& [s, r, probe] = t;
   probe.radiance = [](int x, int y, int) { return glm::vec3(noise(x, y, 0), noise(y, x, 0), 0.5f); };
   r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
@@ -197,7 +200,7 @@ TEST(Denoiser, SpatialOnAFlatMirrorReturnsItsInput) {
 // off every pixel within the reuse disk of one shows a share of it; on, a firefly weighs 1/101
 // against its neighbours' 1/2, so they stay near 1, and a constant input comes back unchanged.
 TEST(Denoiser, FireflyWeightKeepsOutliersFromSpreading) {
-  SpatialOnly t(0.5f);
+  Probed t(floor_scene(0.5f), Stages::SpatialOnly);
   auto& [s, r, probe] = t;
   const auto firefly = [](int x, int y) { return noise(x, y, 0) < 0.02f; };
   const auto brightest = [&](bool on, bool with_fireflies) {
@@ -227,7 +230,7 @@ TEST(Denoiser, FireflyWeightKeepsOutliersFromSpreading) {
 TEST(Denoiser, FireflyWeightFadesWithHistory) {
   const auto firefly = [](int x, int y) { return noise(x, y, 0) < 0.02f; };
   const auto mean_after = [&](bool on, int frames) {
-    SpatialOnly t(0.5f);
+    Probed t(floor_scene(0.5f), Stages::SpatialOnly);
     auto& [s, r, probe] = t;
     probe.p().temporal = 1;
     probe.p().firefly = on;
@@ -255,12 +258,8 @@ TEST(Denoiser, FireflyWeightFadesWithHistory) {
 // A glossy floor under a still camera, fed 1 + uniform noise in [-0.5, 0.5) every frame:
 // temporal accumulation alone (no spatial reuse, no bilateral) converges towards the mean.
 TEST(Denoiser, TemporalAccumulationOfStaticNoiseConvergesToItsMean) {
-  const Scene s = floor_scene(0.4f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
-  probe.p().spatial = 0;
-  probe.p().bilateral = 0;
+  Probed t(floor_scene(0.4f), Stages::TemporalOnly);
+  auto& [s, r, probe] = t;
   probe.radiance = [](int x, int y, int frame) { return glm::vec3(0.5f + noise(x, y, frame)); };
   auto rms_from_mean = [&] {
     const RgbaImageF out = r.read_texture(r.reflection());
@@ -293,12 +292,8 @@ TEST(Denoiser, TemporalAccumulationOfStaticNoiseConvergesToItsMean) {
 // reflection) through temporal accumulation alone: unchanged frame after frame. The clip box
 // must hold each pixel's own value, or edges drift to their neighbourhood's mean.
 TEST(Denoiser, TemporalAccumulationKeepsAStillSharpInput) {
-  const Scene s = floor_scene(0.4f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
-  probe.p().spatial = 0;
-  probe.p().bilateral = 0;
+  Probed t(floor_scene(0.4f), Stages::TemporalOnly);
+  auto& [s, r, probe] = t;
   probe.radiance = [](int x, int y, int) { return glm::vec3(((x / 2 + y / 2) % 2) ? 4.0f : 0.1f); };
   double worst = 0;
   for (int f = 0; f < 8; ++f) {
@@ -324,14 +319,11 @@ TEST(Denoiser, TemporalAccumulationKeepsAStillSharpInput) {
 // the raw trace scored 27.0: `ssrlab sequence --scene corridor --path dolly --frames 24 --size
 // 320x180 --techniques hiz --sweep hiz.denoise=false,true`, llvmpipe).
 TEST(Denoiser, TemporalHistoryBesideASilhouetteIsTheSurfacesOwn) {
-  Scene s = floor_scene(0.4f);
-  s.materials[1] = material({0.8f, 0.3f, 0.2f}, 1.0f, 0.0f, 0.0f);  // F0 0: the box does not reflect
-  validate(s);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
-  probe.p().spatial = 0;
-  probe.p().bilateral = 0;
+  Scene box_dull = floor_scene(0.4f);
+  box_dull.materials[1] = material({0.8f, 0.3f, 0.2f}, 1.0f, 0.0f, 0.0f);  // F0 0: the box does not reflect
+  validate(box_dull);
+  Probed t(std::move(box_dull), Stages::TemporalOnly);
+  auto& [s, r, probe] = t;
   probe.radiance = [](int, int, int) { return glm::vec3(1.0f); };
   double worst = 0;
   int n = 0;
@@ -360,10 +352,8 @@ TEST(Denoiser, TemporalHistoryBesideASilhouetteIsTheSurfacesOwn) {
 TEST(Denoiser, FiltersDoNotCrossADepthEdge) {
   for (const int divisor : {1, 2}) {
     SCOPED_TRACE(divisor == 1 ? "full resolution" : "half resolution");
-    const Scene s = floor_scene(0.5f);
-    Renderer r(s, kW, kH);
-    DenoiseProbe probe;
-    probe.load(r.shaders());
+    Probed t(floor_scene(0.5f));
+    auto& [s, r, probe] = t;
     probe.divisor = divisor;
     probe.p().temporal = divisor == 2;  // one frame: nothing to accumulate, it passes its input on
     probe.p().spatial_radius = 8.0f;
@@ -427,10 +417,8 @@ TEST(Denoiser, FiltersDoNotCrossADepthEdge) {
 // its input.
 TEST(Denoiser, YoungHistoryBlurFadesAsTheHistoryGrows) {
   const auto run = [](float roughness, float young_sigma, int frames) {
-    const Scene s = floor_scene(roughness);
-    Renderer r(s, kW, kH);
-    DenoiseProbe probe;
-    probe.load(r.shaders());
+    Probed t(floor_scene(roughness));
+    auto& [s, r, probe] = t;
     probe.p().young_sigma = young_sigma;
     probe.radiance = [](int x, int y, int frame) { return glm::vec3(0.5f + noise(x, y, frame)); };
     for (int f = 0; f < frames; ++f)
@@ -493,10 +481,8 @@ glm::vec3 checker(int x, int y, int) { return glm::vec3(((x / 2 + y / 2) % 2) ? 
 // The floor is flat, so its neighbours count in full and its checker blurs; the sphere's normals
 // turn by degrees a pixel, far outside its lobe, so its checker comes back as it went in.
 TEST(Denoiser, YoungHistoryBlurKeepsACurvedMirrorSharp) {
-  const Scene s = sphere_on_floor(0.05f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
+  Probed t(sphere_on_floor(0.05f));
+  auto& [s, r, probe] = t;
   probe.radiance = checker;
   r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
   const RgbaImageF out = r.read_texture(r.reflection());
@@ -530,10 +516,8 @@ TEST(Denoiser, YoungHistoryBlurKeepsACurvedMirrorSharp) {
 // sigma is under the pixel's own (frame 11: 2 / 12 against at least 0.375 on this lobe), the
 // sphere is what it is with young_sigma 0, bit for bit.
 TEST(Denoiser, YoungHistoryBlurFadesWithoutAStepOnACurvedSurface) {
-  const Scene s = sphere_on_floor(0.15f);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
+  Probed t(sphere_on_floor(0.15f));
+  auto& [s, r, probe] = t;
   probe.radiance = checker;
   const std::vector<std::uint16_t> material = [&] {
     r.render(FrameRequest(s.cameras[0]), probe, ViewMode::Final, nullptr);
@@ -585,13 +569,13 @@ TEST(Denoiser, YoungHistoryBlurFadesWithoutAStepOnACurvedSurface) {
 // floor, so its texels look like the floor's but hold no result: averaged in as zeros they
 // would darken the floor around it (measured 0.43 so).
 TEST(Denoiser, HalfResolutionKeepsAConstantInputOnEveryPixel) {
-  Scene s = floor_scene(0.4f);
-  s.materials.push_back(material({0.2f, 0.2f, 0.6f}, 0.4f, 0.0f, 0.0f));  // F0 0: no reflection
-  add_mesh(s, meshgen::box({2.0f, 0.002f, 0.5f}), "mat", 2, glm::translate(glm::mat4(1.0f), {0.0f, 0.001f, 1.8f}));
-  validate(s);
-  Renderer r(s, kW, kH);
-  DenoiseProbe probe;
-  probe.load(r.shaders());
+  Scene with_mat = floor_scene(0.4f);
+  with_mat.materials.push_back(material({0.2f, 0.2f, 0.6f}, 0.4f, 0.0f, 0.0f));  // F0 0: no reflection
+  add_mesh(with_mat, meshgen::box({2.0f, 0.002f, 0.5f}), "mat", 2,
+           glm::translate(glm::mat4(1.0f), {0.0f, 0.001f, 1.8f}));
+  validate(with_mat);
+  Probed t(std::move(with_mat));
+  auto& [s, r, probe] = t;
   probe.divisor = 2;
   probe.radiance = [](int, int, int) { return glm::vec3(1.0f); };
   double worst = 0;
