@@ -106,13 +106,17 @@ ReferenceImages ScoredFrame::references(int samples) {
   return r;
 }
 
-std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples) {
-  auto ref = create_technique(truth_name());
-  ParamSet from = truth.params(), to = ref->params();
+void set_up_with_seed(Technique& truth, Technique& ref, long shift, int samples) {
+  ParamSet from = truth.params(), to = ref.params();
   to.copy_values_from(from);
   if (samples > 0) to.set(static_cast<std::size_t>(to.find("samples")), samples);
   const std::size_t seed = static_cast<std::size_t>(to.find("seed"));
   to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + shift) % 1000000));
+}
+
+std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples) {
+  auto ref = create_technique(truth_name());
+  set_up_with_seed(truth, *ref, shift, samples);
   return ref;
 }
 

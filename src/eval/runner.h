@@ -88,8 +88,10 @@ int technique_samples(Technique& t);
 // sequence and the viewer), apart from the noise floor's run (7919): independent samples.
 inline constexpr long kTruthNoiseSeedShift = 2 * 7919;
 
-// A reference set up as `truth` (the same parameters) with its seed moved by `shift` and, where
-// `samples` > 0, that many rays a rough pixel; not loaded.
+// Sets the reference `ref` up as `truth` (the same parameters) with its seed moved by `shift` and,
+// where `samples` > 0, that many rays a rough pixel.
+void set_up_with_seed(Technique& truth, Technique& ref, long shift, int samples = 0);
+// A new reference set up so; not loaded.
 std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples = 0);
 
 struct TimingOptions {

@@ -356,11 +356,15 @@ void Viewer::update_truth_noise() {
   const Side& s = sides_[t];
   if (noise_shown_key_ == s.shown_key && noise_ran_key_ == s.ran_key) return;
   if (noise_ran_key_ != s.ran_key) {
-    // The truth's settings with compare's second seed.
-    const std::unique_ptr<Technique> second = reference_with_seed(*s.technique, kTruthNoiseSeedShift);
-    second->load(renderer_->shaders());
-    set_reference_progress(*second, [this](double f) { draw_progress("truth noise", f); });
-    renderer_->render(current_frame(), *second, ViewMode::Final, nullptr);
+    // The truth's settings with compare's second seed. One reference serves every truth, so its
+    // program is built once and its BVH once a scene, as the mask's are.
+    if (!noise_truth_) {
+      noise_truth_ = create_technique(truth_name());
+      noise_truth_->load(renderer_->shaders());
+      set_reference_progress(*noise_truth_, [this](double f) { draw_progress("truth noise", f); });
+    }
+    set_up_with_seed(*s.technique, *noise_truth_, kTruthNoiseSeedShift);
+    renderer_->render(current_frame(), *noise_truth_, ViewMode::Final, nullptr);
     noise_color_ = renderer_->read_texture(renderer_->color());
     noise_ran_key_ = s.ran_key;
   }

@@ -227,6 +227,7 @@ void Viewer::reload() {
       s.instrumented = false;
     }
     if (mask_ref_) mask_ref_->load(renderer_->shaders());
+    if (noise_truth_) noise_truth_->load(renderer_->shaders());
     noise_ran_key_.clear();  // the second truth runs again with the new shaders
     diff_prog_ = gl::Program::compute(renderer_->shaders(), "render/diff.comp");
     for (Side& s : sides_) {  // nothing shown was drawn by these programs: every side runs again

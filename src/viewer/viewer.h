@@ -179,6 +179,7 @@ class Viewer {
   // truth image; half their mean squared difference, as PSNR, is the noise floor (README "The
   // truth's own noise", as compare and bench estimate it).
   bool truth_noise_ = false;
+  std::unique_ptr<Technique> noise_truth_;  // the second truth, set up anew for each truth
   RgbaImageF noise_color_;       // the second truth's composited colour
   std::string noise_ran_key_;    // the truth side's ran_key it was run for
   std::string noise_shown_key_;  // the truth side's shown_key the figure is of
