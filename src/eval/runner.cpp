@@ -114,17 +114,15 @@ void set_up_with_seed(Technique& truth, Technique& ref, long shift, int samples)
   to.set(seed, static_cast<double>((static_cast<long>(from.get(seed)) + shift) % 1000000));
 }
 
-std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples) {
-  auto ref = create_technique(truth_name());
-  set_up_with_seed(truth, *ref, shift, samples);
-  return ref;
-}
-
 void ScoredFrame::rerun_reference(int samples, long shift) {
-  auto ref = reference_with_seed(reference_, shift, samples);
-  ref->load(renderer_.shaders());
-  renderer_.render(frame_, *ref, ViewMode::Final, nullptr);
-  last_rerun_ = std::move(ref);
+  // One second reference serves every rerun, set up anew each time: its program is compiled once
+  // and its BVH built once a scene (the viewer's truth-noise reference does the same).
+  if (!last_rerun_) {
+    last_rerun_ = create_technique(truth_name());
+    last_rerun_->load(renderer_.shaders());
+  }
+  set_up_with_seed(reference_, *last_rerun_, shift, samples);
+  renderer_.render(frame_, *last_rerun_, ViewMode::Final, nullptr);
 }
 
 std::optional<TruthNoise> ScoredFrame::truth_noise() {

@@ -65,9 +65,9 @@ class ScoredFrame {
  private:
   RgbaImageF display_of(ViewMode view);
   // Renders the reference again with `samples` rays a rough pixel and its seed moved by `shift`
-  // (independent samples): its truth in the renderer's targets, the run in last_rerun_.
+  // (independent samples): its truth in the renderer's targets, its outputs in last_rerun_.
   void rerun_reference(int samples, long shift);
-  std::unique_ptr<Technique> last_rerun_;
+  std::unique_ptr<Technique> last_rerun_;  // the reference every rerun uses
   Renderer& renderer_;
   Technique& reference_;
   FrameRequest frame_;
@@ -91,8 +91,6 @@ inline constexpr long kTruthNoiseSeedShift = 2 * 7919;
 // Sets the reference `ref` up as `truth` (the same parameters) with its seed moved by `shift` and,
 // where `samples` > 0, that many rays a rough pixel.
 void set_up_with_seed(Technique& truth, Technique& ref, long shift, int samples = 0);
-// A new reference set up so; not loaded.
-std::unique_ptr<Technique> reference_with_seed(Technique& truth, long shift, int samples = 0);
 
 struct TimingOptions {
   int warmup = 3;
