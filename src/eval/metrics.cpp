@@ -56,6 +56,19 @@ std::optional<double> rmse_of(double sum_sq, std::size_t pixels) {
   return std::isfinite(r) ? r : 1.0;  // unreachable for finite sums; keeps the promise anyway
 }
 
+// RMSE of a vs b over the pixels i for which keep(i) holds (both rmse_where overloads).
+template <class Keep>
+std::optional<double> rmse_over(const RgbaImageF& a, const RgbaImageF& b, Keep keep) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0, n = pixel_count(a); i < n; ++i) {
+    if (!keep(i)) continue;
+    sum += pixel_sq_error(a, b, i);
+    ++count;
+  }
+  return rmse_of(sum, count);
+}
+
 std::size_t count_nonfinite_rgb(const RgbaImageF& img, std::size_t i) {
   const float* p = &img.pixels[i * 4];
   return static_cast<std::size_t>(!std::isfinite(p[0])) +
@@ -86,14 +99,7 @@ std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const
     throw std::invalid_argument("metrics: the class map has " + std::to_string(cls.size()) +
                                 " entries for " + std::to_string(n) + " pixels.");
   }
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (mask && !mask(cls[i])) continue;
-    sum += pixel_sq_error(a, b, i);
-    ++count;
-  }
-  return rmse_of(sum, count);
+  return rmse_over(a, b, [&](std::size_t i) { return !mask || mask(cls[i]); });
 }
 
 ErrorMetrics compute_metrics(const RgbaImageF& technique, const RgbaImageF& truth,
@@ -159,14 +165,7 @@ std::optional<double> rmse_where(const RgbaImageF& a, const RgbaImageF& b, const
   if (mask.size() != pixel_count(a))
     throw std::invalid_argument("metrics: the mask has " + std::to_string(mask.size()) + " entries for " +
                                 std::to_string(pixel_count(a)) + " pixels.");
-  double sum = 0.0;
-  std::size_t count = 0;
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    sum += pixel_sq_error(a, b, i);
-    ++count;
-  }
-  return rmse_of(sum, count);
+  return rmse_over(a, b, [&](std::size_t i) { return bool(mask[i]); });
 }
 
 std::optional<double> psnr_where(const RgbaImageF& a, const RgbaImageF& b, const std::vector<bool>& mask) {
